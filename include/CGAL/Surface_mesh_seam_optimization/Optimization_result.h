@@ -1,0 +1,39 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZATION_RESULT_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZATION_RESULT_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// What `minimize_distortion()` and `optimize_seams()` return.
+struct Optimization_result
+{
+  Error_code status = ERROR_WRONG_PARAMETER;
+  std::string message;              ///< details of an error (which face, which parameter)
+  double distortion = std::numeric_limits<double>::infinity(); ///< E_SD of the result (>= 4)
+  double initial_distortion = std::numeric_limits<double>::infinity();
+  double seam_length = 0;           ///< 3D length of the seam edges, each once
+  double seam_length_normalized = 0;///< seam_length / sqrt(area / pi)
+  double lambda = 0;                ///< final seam weight of E_w
+  std::size_t charts = 0;
+  std::size_t iterations = 0;       ///< Newton iterations
+  std::size_t topology_operations = 0;
+  bool bound_met = false;
+  double seconds = 0;
+
+  bool has_result() const { return Surface_mesh_seam_optimization::has_result(status); }
+};
+
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif
