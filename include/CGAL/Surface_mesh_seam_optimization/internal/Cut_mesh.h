@@ -1,0 +1,185 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The core's data: the 3D mesh in flat arrays (never changed) and a mutable
+// corner -> UV-vertex labelling. Cutting and merging only relabel corners.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_MESH_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_MESH_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// Corner c = 3*f + i is corner i of face f. Halfedge c is the halfedge of
+// face f that ENDS at corner c (it starts at prev(c)), as CGAL's per-halfedge
+// UV convention: get(uvmap, h) is the UV of target(h) in face(h).
+struct Cut_mesh
+{
+  // --- 3D surface (fixed) ---
+  std::vector<double> points;        // 3 per vertex
+  std::vector<int> corner_vertex;    // 3 per face
+  std::vector<int> opposite;         // 3 per face: opposite halfedge, -1 on the input boundary
+  std::vector<double> face_area;     // 3D area per face
+  std::vector<double> rest_inverse;  // 4 per face: Dm^-1 (column-major) of the local 2D rest frame
+  double total_area = 0;
+
+  // --- UV mesh (mutable) ---
+  std::vector<int> corner_uv;        // 3 per face
+  std::vector<double> uv;            // 2 per UV vertex
+  std::vector<int> uv_vertex;        // 3D vertex of each UV vertex
+
+  std::size_t number_of_faces() const { return corner_vertex.size() / 3; }
+  std::size_t number_of_vertices() const { return points.size() / 3; }
+  std::size_t number_of_uv_vertices() const { return uv_vertex.size(); }
+
+  static int next(int c) { return c % 3 == 2 ? c - 2 : c + 1; }
+  static int prev(int c) { return c % 3 == 0 ? c + 2 : c - 1; }
+
+  // The UV corners of both sides of an interior halfedge differ: a seam.
+  bool is_seam(int h) const
+  {
+    const int o = opposite[h];
+    if(o < 0) return false;
+    return corner_uv[h] != corner_uv[prev(o)] || corner_uv[prev(h)] != corner_uv[o];
+  }
+
+  double edge_length(int h) const
+  {
+    const double* a = &points[3 * corner_vertex[h]];
+    const double* b = &points[3 * corner_vertex[prev(h)]];
+    return std::sqrt((a[0]-b[0])*(a[0]-b[0]) + (a[1]-b[1])*(a[1]-b[1]) + (a[2]-b[2])*(a[2]-b[2]));
+  }
+
+  // Twice the signed UV area of face f.
+  double signed_uv_area2(std::size_t f) const
+  {
+    const double* a = &uv[2 * corner_uv[3*f]];
+    const double* b = &uv[2 * corner_uv[3*f+1]];
+    const double* c = &uv[2 * corner_uv[3*f+2]];
+    return (b[0]-a[0]) * (c[1]-a[1]) - (b[1]-a[1]) * (c[0]-a[0]);
+  }
+
+  // Fills face_area / rest_inverse / total_area from the 3D points.
+  void compute_rest_shape()
+  {
+    const std::size_t nf = number_of_faces();
+    face_area.assign(nf, 0.);
+    rest_inverse.assign(4 * nf, 0.);
+    total_area = 0;
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const double* p0 = &points[3 * corner_vertex[3*f]];
+      const double* p1 = &points[3 * corner_vertex[3*f+1]];
+      const double* p2 = &points[3 * corner_vertex[3*f+2]];
+      double e1[3], e2[3];
+      for(int k = 0; k < 3; ++k) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
+      const double l1 = std::sqrt(e1[0]*e1[0] + e1[1]*e1[1] + e1[2]*e1[2]);
+      const double x2 = (e1[0]*e2[0] + e1[1]*e2[1] + e1[2]*e2[2]) / l1;
+      const double y2 = std::sqrt(std::max(0., e2[0]*e2[0] + e2[1]*e2[1] + e2[2]*e2[2] - x2*x2));
+      // Dm = [[l1, x2], [0, y2]]
+      double* B = &rest_inverse[4*f];
+      B[0] = 1. / l1; B[1] = 0.; B[2] = -x2 / (l1 * y2); B[3] = 1. / y2;
+      face_area[f] = 0.5 * l1 * y2;
+      total_area += face_area[f];
+    }
+  }
+
+  // Chart id per face (faces joined across non-seam interior edges); returns the count.
+  std::size_t compute_charts(std::vector<int>& chart) const
+  {
+    const std::size_t nf = number_of_faces();
+    chart.assign(nf, -1);
+    std::vector<int> stack;
+    int n = 0;
+    for(std::size_t s = 0; s < nf; ++s)
+    {
+      if(chart[s] >= 0) continue;
+      chart[s] = n;
+      stack.push_back(int(s));
+      while(!stack.empty())
+      {
+        const int f = stack.back(); stack.pop_back();
+        for(int i = 0; i < 3; ++i)
+        {
+          const int h = 3*f + i;
+          const int o = opposite[h];
+          if(o < 0 || is_seam(h)) continue;
+          if(chart[o / 3] < 0) { chart[o / 3] = n; stack.push_back(o / 3); }
+        }
+      }
+      ++n;
+    }
+    return std::size_t(n);
+  }
+
+  // Sum of 3D lengths of the seam edges, each edge once, optionally weighted per halfedge.
+  double seam_length(const std::vector<double>* halfedge_weight = nullptr) const
+  {
+    double l = 0;
+    for(std::size_t h = 0; h < corner_vertex.size(); ++h)
+    {
+      const int o = opposite[h];
+      if(o < int(h) || !is_seam(int(h))) continue;
+      l += edge_length(int(h)) * (halfedge_weight ? (*halfedge_weight)[h] : 1.);
+    }
+    return l;
+  }
+
+  double normalization_radius() const { return std::sqrt(total_area / 3.14159265358979323846); }
+};
+
+// A chart is a disk iff its Euler characteristic V - E + F is 1 and it has
+// exactly one boundary loop (UV vertices on two boundary stretches are pinched).
+inline bool all_charts_are_disks(const Cut_mesh& cm, std::size_t& bad_chart)
+{
+  std::vector<int> chart;
+  const std::size_t nc = cm.compute_charts(chart);
+  const std::size_t nuv = cm.number_of_uv_vertices();
+  std::vector<long> chi(nc, 0), loops(nc, 0);
+  std::vector<int> uv_chart(nuv, -1);
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    uv_chart[cm.corner_uv[c]] = chart[c / 3];
+  for(std::size_t u = 0; u < nuv; ++u)
+    if(uv_chart[u] >= 0) ++chi[uv_chart[u]];
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) ++chi[chart[f]];
+
+  std::vector<int> boundary_next(nuv, -1), boundary_count(nuv, 0);
+  for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+  {
+    const int o = cm.opposite[h];
+    const bool chart_border = (o < 0 || cm.is_seam(int(h)));
+    if(chart_border || o > int(h)) --chi[chart[h / 3]]; // each UV edge once
+    if(chart_border)
+    {
+      const int to = cm.corner_uv[h];
+      boundary_next[to] = cm.corner_uv[Cut_mesh::prev(int(h))];
+      ++boundary_count[to];
+    }
+  }
+  for(std::size_t u = 0; u < nuv; ++u)
+    if(boundary_count[u] > 1) { bad_chart = std::size_t(uv_chart[u]); return false; }
+
+  std::vector<char> visited(nuv, 0);
+  for(std::size_t u = 0; u < nuv; ++u)
+  {
+    if(boundary_next[u] < 0 || visited[u]) continue;
+    ++loops[uv_chart[u]];
+    for(int w = int(u); w >= 0 && !visited[w]; w = boundary_next[w]) visited[w] = 1;
+  }
+  for(std::size_t c = 0; c < nc; ++c)
+    if(chi[c] != 1 || loops[c] != 1) { bad_chart = c; return false; }
+  return true;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,62 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The largest step along a direction that flips no triangle: the smallest
+// positive root of each triangle's signed-area quadratic.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_FLIP_FREE_STEP_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_FLIP_FREE_STEP_H
+
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// Smallest root > 0 of a t^2 + b t + c with c > 0; +inf if none.
+inline double smallest_positive_root(double a, double b, double c)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  const double scale = std::abs(a) + std::abs(b) + std::abs(c);
+  if(std::abs(a) <= 1e-14 * scale)
+    return b < 0 ? -c / b : inf;
+  const double disc = b * b - 4 * a * c;
+  if(disc < 0) return inf;
+  // stable roots: q = -(b + sign(b) sqrt(disc)) / 2, roots q/a and c/q
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  double r = inf;
+  const double r1 = q / a, r2 = (q != 0) ? c / q : inf;
+  if(r1 > 0) r = r1;
+  if(r2 > 0 && r2 < r) r = r2;
+  return r;
+}
+
+// Largest t such that uv + s * dir flips no face for all s in [0, t).
+inline double max_flip_free_step(const Cut_mesh& cm, const double* uv, const double* dir)
+{
+  double t = std::numeric_limits<double>::infinity();
+  const std::size_t nf = cm.number_of_faces();
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const int i0 = cm.corner_uv[3*f], i1 = cm.corner_uv[3*f+1], i2 = cm.corner_uv[3*f+2];
+    const double d1x = uv[2*i1] - uv[2*i0], d1y = uv[2*i1+1] - uv[2*i0+1];
+    const double d2x = uv[2*i2] - uv[2*i0], d2y = uv[2*i2+1] - uv[2*i0+1];
+    const double q1x = dir[2*i1] - dir[2*i0], q1y = dir[2*i1+1] - dir[2*i0+1];
+    const double q2x = dir[2*i2] - dir[2*i0], q2y = dir[2*i2+1] - dir[2*i0+1];
+    const double c = d1x * d2y - d1y * d2x;
+    const double b = d1x * q2y - d1y * q2x + q1x * d2y - q1y * d2x;
+    const double a = q1x * q2y - q1y * q2x;
+    const double r = smallest_positive_root(a, b, c);
+    if(r < t) t = r;
+  }
+  return t;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

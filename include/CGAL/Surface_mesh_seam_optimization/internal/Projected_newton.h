@@ -1,0 +1,249 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Projected Newton on the distortion energy of a Cut_mesh with a flip-free
+// backtracking line search. The sparsity pattern is analysed once per UV
+// topology; every iteration only refills the values and refactorizes.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
+
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+struct Newton_settings
+{
+  // Stop when |g|^2 * A (scale-free) falls below this.
+  double gradient_tolerance = 1e-12;
+  // Stop when the relative energy decrease of an iteration falls below this.
+  double relative_decrease_tolerance = 1e-6;
+  double armijo = 1e-4;
+  // Fraction of the largest flip-free step taken at most.
+  double flip_free_fraction = 0.99;
+};
+
+enum Newton_status { NEWTON_PROGRESS, NEWTON_CONVERGED, NEWTON_SOLVER_FAILED };
+
+// Total normalized energy sum_t A_t psi(J_t) / A; +inf if a face is flipped.
+template <typename Energy>
+double total_energy(const Cut_mesh& cm, const Energy& energy, const double* uv)
+{
+  double e = 0;
+  Eigen::Matrix2d J;
+  const std::size_t nf = cm.number_of_faces();
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    face_jacobian(cm, f, uv, J);
+    e += cm.face_area[f] * energy.value(J);
+  }
+  return e / cm.total_area;
+}
+
+// Scales all UVs (about their centroid) to the energy-minimizing factor:
+// a golden-section search on the log of the factor (energies are smooth in it).
+template <typename Energy>
+double rescale_to_optimal(Cut_mesh& cm, const Energy& energy)
+{
+  const std::size_t n = cm.number_of_uv_vertices();
+  std::vector<double> trial(cm.uv.size());
+  auto eval = [&](double s) {
+    const double k = std::exp(s);
+    for(std::size_t i = 0; i < 2 * n; ++i) trial[i] = k * cm.uv[i];
+    return total_energy(cm, energy, trial.data());
+  };
+  double lo = -8, hi = 8;
+  const double g = 0.5 * (std::sqrt(5.) - 1.);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = eval(x1), f2 = eval(x2);
+  for(int it = 0; it < 80 && hi - lo > 1e-10; ++it)
+  {
+    if(f1 <= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = eval(x1); }
+    else         { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = eval(x2); }
+  }
+  const double s = 0.5 * (lo + hi);
+  const double e0 = total_energy(cm, energy, cm.uv.data());
+  if(!(eval(s) < e0)) return 1.;
+  const double k = std::exp(s);
+  for(double& x : cm.uv) x *= k;
+  return k;
+}
+
+template <typename Energy, typename SolverTraits>
+class Projected_newton
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  Projected_newton(Cut_mesh& cm, const Energy& energy, const SolverTraits& solver,
+                   const Newton_settings& settings = Newton_settings())
+    : m_cm(cm), m_energy(energy), m_solver(solver), m_settings(settings)
+  {}
+
+  // Call after any change of the corner -> UV labelling.
+  bool rebuild_pattern()
+  {
+    const std::size_t nf = m_cm.number_of_faces();
+    const int ndof = int(2 * m_cm.number_of_uv_vertices());
+    std::vector<Eigen::Triplet<double> > triplets;
+    triplets.reserve(21 * nf + ndof);
+    int dof[6];
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      local_dofs(f, dof);
+      for(int p = 0; p < 6; ++p)
+        for(int q = 0; q <= p; ++q)
+          triplets.emplace_back((std::max)(dof[p], dof[q]), (std::min)(dof[p], dof[q]), 0.);
+    }
+    for(int d = 0; d < ndof; ++d) triplets.emplace_back(d, d, 0.);
+    m_H.resize(ndof, ndof);
+    m_H.setFromTriplets(triplets.begin(), triplets.end());
+    m_H.makeCompressed();
+
+    m_entry.resize(21 * nf);
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      local_dofs(f, dof);
+      int k = 0;
+      for(int p = 0; p < 6; ++p)
+        for(int q = 0; q <= p; ++q)
+          m_entry[21*f + k++] = entry_index((std::max)(dof[p], dof[q]), (std::min)(dof[p], dof[q]));
+    }
+    m_diagonal.resize(ndof);
+    for(int d = 0; d < ndof; ++d) m_diagonal[d] = entry_index(d, d);
+    m_gradient.resize(ndof);
+    m_energy_value = total_energy(m_cm, m_energy, m_cm.uv.data());
+    return m_solver.analyze_pattern(m_H);
+  }
+
+  double energy() const { return m_energy_value; }
+  double last_step() const { return m_last_step; }
+  double last_decrease() const { return m_last_decrease; }
+  double gradient_norm2() const { return m_gradient_norm2; }
+  std::size_t iterations() const { return m_iterations; }
+
+  // One projected Newton iteration.
+  Newton_status step()
+  {
+    const double e0 = assemble();
+    const double A = m_cm.total_area;
+    m_gradient_norm2 = m_gradient.squaredNorm() * A;
+    if(m_gradient_norm2 < m_settings.gradient_tolerance) return NEWTON_CONVERGED;
+
+    // Regularize the rigid-motion null space of a free-boundary chart.
+    double mean_diag = 0;
+    double* values = m_H.valuePtr();
+    for(int i : m_diagonal) mean_diag += values[i];
+    mean_diag /= double(m_diagonal.size());
+    for(int i : m_diagonal) values[i] += 1e-10 * mean_diag;
+
+    if(!m_solver.factorize(m_H)) return NEWTON_SOLVER_FAILED;
+    Eigen::VectorXd rhs = -m_gradient;
+    if(!m_solver.solve(rhs, m_direction)) return NEWTON_SOLVER_FAILED;
+
+    double slope = m_gradient.dot(m_direction);
+    if(!(slope < 0)) { m_direction = -m_gradient; slope = -m_gradient.squaredNorm(); }
+
+    double t = (std::min)(1., m_settings.flip_free_fraction *
+                                max_flip_free_step(m_cm, m_cm.uv.data(), m_direction.data()));
+    m_trial.resize(m_cm.uv.size());
+    double e = std::numeric_limits<double>::infinity();
+    for(int k = 0; k < 60; ++k, t *= 0.5)
+    {
+      for(std::size_t i = 0; i < m_trial.size(); ++i) m_trial[i] = m_cm.uv[i] + t * m_direction[i];
+      e = total_energy(m_cm, m_energy, m_trial.data());
+      if(e <= e0 + m_settings.armijo * t * slope) break;
+    }
+    ++m_iterations;
+    if(!(e < e0))
+    {
+      m_last_step = 0; m_last_decrease = 0;
+      return NEWTON_CONVERGED; // the step vanished
+    }
+    m_cm.uv.swap(m_trial);
+    m_last_step = t;
+    m_last_decrease = e0 - e;
+    m_energy_value = e;
+    if(m_last_decrease < m_settings.relative_decrease_tolerance * t * e0) return NEWTON_CONVERGED;
+    return NEWTON_PROGRESS;
+  }
+
+private:
+  void local_dofs(std::size_t f, int* dof) const
+  {
+    for(int a = 0; a < 3; ++a)
+    {
+      dof[2*a] = 2 * m_cm.corner_uv[3*f + a];
+      dof[2*a + 1] = dof[2*a] + 1;
+    }
+  }
+
+  int entry_index(int row, int col) const
+  {
+    const int* begin = m_H.innerIndexPtr() + m_H.outerIndexPtr()[col];
+    const int* end = m_H.innerIndexPtr() + m_H.outerIndexPtr()[col + 1];
+    return int(std::lower_bound(begin, end, row) - m_H.innerIndexPtr());
+  }
+
+  // Gradient and projected Hessian at the current UVs; returns the energy.
+  double assemble()
+  {
+    const std::size_t nf = m_cm.number_of_faces();
+    std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
+    m_gradient.setZero();
+    const double inv_area = 1. / m_cm.total_area;
+    double e = 0;
+    Eigen::Matrix2d J, dJ;
+    Eigen::Matrix4d HJ;
+    Eigen::Matrix<double, 6, 6> H;
+    double g[6];
+    int dof[6];
+    double* values = m_H.valuePtr();
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      face_jacobian(m_cm, f, m_cm.uv.data(), J);
+      const double w = m_cm.face_area[f] * inv_area;
+      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, true);
+      const Jacobian_coefficients k(&m_cm.rest_inverse[4*f]);
+      element_derivatives(k, w, dJ, HJ, g, &H);
+      local_dofs(f, dof);
+      for(int p = 0; p < 6; ++p) m_gradient[dof[p]] += g[p];
+      const int* entry = &m_entry[21*f];
+      int n = 0;
+      for(int p = 0; p < 6; ++p)
+        for(int q = 0; q <= p; ++q)
+          values[entry[n++]] += H(p, q);
+    }
+    m_energy_value = e;
+    return e;
+  }
+
+  Cut_mesh& m_cm;
+  const Energy& m_energy;
+  SolverTraits m_solver;
+  Newton_settings m_settings;
+
+  Matrix m_H;
+  std::vector<int> m_entry, m_diagonal;
+  Eigen::VectorXd m_gradient, m_direction;
+  std::vector<double> m_trial;
+  double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
+  std::size_t m_iterations = 0;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif
