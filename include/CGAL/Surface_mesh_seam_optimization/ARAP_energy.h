@@ -1,0 +1,97 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// As-rigid-as-possible energy density (Liu et al. 2008).
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_ARAP_ENERGY_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_ARAP_ENERGY_H
+
+#include <CGAL/Surface_mesh_seam_optimization/internal/Isotropic_energy_eigensystem.h>
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// As-rigid-as-possible energy density
+/// \f$ \psi(J) = (\sigma_1 - 1)^2 + (\sigma_2 - 1)^2 \f$, 0 at rotations.
+///
+/// Unlike `Symmetric_Dirichlet_energy` it is not a barrier: it stays bounded
+/// as a triangle degenerates, so nothing in the energy itself prevents
+/// flips. Flip-freeness comes from the optimizer's line search, which never
+/// accepts a step that makes a UV triangle's signed area non-positive. For
+/// consistency with the other models, the value is \f$+\infty\f$ for
+/// \f$\det(J) \le 0\f$.
+///
+/// \cgalModels `DistortionEnergy`
+class ARAP_energy
+{
+public:
+  /// \f$\psi(J)\f$, or \f$+\infty\f$ if \f$\det(J) \le 0\f$.
+  double value(const Eigen::Matrix2d& J) const
+  {
+    const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+    if(!(det > 0))
+      return std::numeric_limits<double>::infinity();
+    // s1 + s2 = |conformal part| = |(J00 + J11, J10 - J01)| when det > 0.
+    const double e = J(0, 0) + J(1, 1), h = J(1, 0) - J(0, 1);
+    return J.squaredNorm() - 2 * std::sqrt(e * e + h * h) + 2;
+  }
+
+  /// Returns \f$\psi(J)\f$ and writes \f$\partial\psi/\partial J\f$ into `dJ`
+  /// (set to zero when the value is \f$+\infty\f$).
+  double value_and_gradient(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ) const
+  {
+    const double psi = value(J);
+    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); return psi; }
+    const internal::Signed_svd_2 svd(J);
+    internal::isotropic_gradient(svd, derivatives(svd.s1, svd.s2), dJ);
+    return psi;
+  }
+
+  /// Returns \f$\psi(J)\f$, writes \f$\partial\psi/\partial J\f$ into `dJ` and
+  /// the 4x4 Hessian with respect to vec(J) = (J00, J10, J01, J11) into `H`.
+  /// With `project`, negative eigenvalues of `H` are set to 0 (analytic
+  /// eigensystem). `dJ` and `H` are set to zero when the value is \f$+\infty\f$.
+  double value_gradient_and_hessian(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ,
+                                    Eigen::Matrix4d& H, bool project = true) const
+  {
+    const double psi = value(J);
+    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); H.setZero(); return psi; }
+    const internal::Signed_svd_2 svd(J);
+    const internal::Isotropic_derivatives_2 d = derivatives(svd.s1, svd.s2);
+    internal::isotropic_gradient(svd, d, dJ);
+    internal::isotropic_hessian(svd, d, project, H);
+    return psi;
+  }
+
+  /// Value at every rotation, the global minimum.
+  static constexpr double minimum_value() { return 0.0; }
+
+  /// Identifier of the energy.
+  const char* name() const { return "arap"; }
+
+  /// \cond SKIP_IN_MANUAL
+  // Derivatives with respect to the singular values.
+  static internal::Isotropic_derivatives_2 derivatives(double s1, double s2)
+  {
+    internal::Isotropic_derivatives_2 d;
+    d.d1 = 2 * (s1 - 1);
+    d.d2 = 2 * (s2 - 1);
+    d.d11 = d.d22 = 2;
+    d.d12 = 0;
+    d.twist = 2 - 4 / (s1 + s2); // negative below s1 + s2 = 2 (compression)
+    d.flip = 2;
+    return d;
+  }
+  /// \endcond
+};
+
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_ARAP_ENERGY_H
