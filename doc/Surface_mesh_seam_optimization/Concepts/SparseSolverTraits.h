@@ -1,0 +1,68 @@
+/*!
+\ingroup PkgSurfaceMeshSeamOptimizationConcepts
+\cgalConcept
+
+The concept `SparseSolverTraits` describes the sparse direct solver that the
+projected Newton iterations of the package use to solve \f$ H p = -g \f$,
+where \f$ H \f$ is the assembled Hessian of the distortion energy (each
+triangle's contribution projected to be positive semi-definite) and \f$ g \f$
+its gradient.
+
+The work is split in three steps so that the symbolic analysis (fill-reducing
+ordering, elimination tree) is done once per sparsity pattern and reused by
+every Newton iteration until the UV topology changes:
+`analyze_pattern()` when the pattern is new, `factorize()` at every iteration,
+then `solve()` with one or more right-hand sides.
+
+The matrix is symmetric and only its lower triangle (row index >= column
+index, diagonal included) is stored: a model must read that triangle, as
+Eigen's `SimplicialLDLT<Matrix, Eigen::Lower>` does.
+
+A model is default constructible and copy constructible; it is passed by
+value, like CGAL's own solver traits, so a copy may share the factorization
+with the original.
+
+\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_simplicial_ldlt_traits` (the default)
+\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Cholmod_traits` (when SuiteSparse is found)
+\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_sparse_solver_traits` with any Eigen sparse direct solver
+
+\sa `CGAL::Surface_mesh_seam_optimization::minimize_distortion()`
+*/
+class SparseSolverTraits
+{
+public:
+  /// \name Types
+  /// @{
+
+  /// The sparse matrix type: column-major, `double`, `int` indices.
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /// Default constructor.
+  SparseSolverTraits();
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// Symbolic analysis of the sparsity pattern of `A` (a symmetric matrix of
+  /// which at least the lower triangle is stored). Called again only when the
+  /// pattern changes. Returns `false` on failure.
+  bool analyze_pattern(const Matrix& A);
+
+  /// Numeric factorization of `A`, which has the pattern given to the last
+  /// call of `analyze_pattern()`. Returns `false` on failure (for example a
+  /// matrix that is not numerically positive definite).
+  bool factorize(const Matrix& A);
+
+  /// Solves `A x = b` with the last factorization. Returns `false` on failure,
+  /// including when `x` is not finite.
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+
+  /// @}
+};
