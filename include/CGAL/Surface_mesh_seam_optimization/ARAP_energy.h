@@ -16,7 +16,7 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// \ingroup PkgSurfaceMeshSeamOptimizationEnergies
 /// As-rigid-as-possible energy density
 /// \f$ \psi(J) = (\sigma_1 - 1)^2 + (\sigma_2 - 1)^2 \f$, 0 at rotations.
 ///

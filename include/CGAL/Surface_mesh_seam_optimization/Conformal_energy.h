@@ -15,7 +15,7 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// \ingroup PkgSurfaceMeshSeamOptimizationEnergies
 /// Conformal (MIPS) energy density
 /// \f$ \psi(J) = \sigma_1 / \sigma_2 + \sigma_2 / \sigma_1 = \|J\|_F^2 / \det(J) \f$.
 /// It measures angle distortion only: it is scale invariant, equals 2 at

@@ -16,7 +16,7 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// \ingroup PkgSurfaceMeshSeamOptimizationEnergies
 /// Symmetric Dirichlet energy density
 /// \f$ \psi(J) = \sigma_1^2 + \sigma_2^2 + \sigma_1^{-2} + \sigma_2^{-2}
 ///            = \|J\|_F^2 \, (1 + \det(J)^{-2}) \f$.
