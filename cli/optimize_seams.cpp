@@ -1,0 +1,725 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// optimize_seams: command-line front end of Surface_mesh_seam_optimization.
+// A thin shell: parse options, load and check the mesh, call the library,
+// write the OBJ and the JSON report. Every failure is one line on stderr and
+// a non-zero exit code (1: input or run failed, 2: bad options).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+#include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
+#include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_2                                     Point_2;
+typedef Kernel::Point_3                                     Point_3;
+typedef CGAL::Surface_mesh<Point_3>                         Mesh;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor      halfedge_descriptor;
+typedef boost::graph_traits<Mesh>::edge_descriptor          edge_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor          face_descriptor;
+
+const char* const program_name = "optimize_seams";
+
+enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
+
+// Always passed to the library, so --help can state the cap in force.
+const std::size_t default_max_iterations = 1000;
+
+// ---------------------------------------------------------------------------
+// Options
+
+struct Options
+{
+  std::string input;
+  std::string output;          // empty: INPUT stem + "_uv.obj" in the current directory
+  std::string report;          // empty: no JSON report
+  bool keep_seams = false;
+  bool quiet = false;
+  std::size_t max_iterations = default_max_iterations;
+};
+
+enum class Parse_status { RUN, HELP, ERROR };
+
+void print_help(std::ostream& os)
+{
+  os << "Usage: " << program_name << " INPUT [options]\n"
+     << "\n"
+     << "Computes a UV map (texture coordinates) of a triangle mesh with low symmetric\n"
+     << "Dirichlet distortion and writes it as an OBJ with per-corner texture coordinates.\n"
+     << "\n"
+     << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
+     << "                          three corners are triangulated (a note says so); a\n"
+     << "                          non-manifold mesh or a zero-area triangle is an error.\n"
+     << "                          In this version the mesh must be a topological disk\n"
+     << "                          (or several), as the seams are not optimized yet.\n"
+     << "\n"
+     << "Options:\n"
+     << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
+     << "                          \"_uv.obj\", in the current directory)\n"
+     << "  --keep-seams            keep the input's seams (none for a disk) and only minimize\n"
+     << "                          distortion. This is the only mode until seam optimization\n"
+     << "                          is available, and the default for now (a note says so when\n"
+     << "                          the option is not given)\n"
+     << "  --max-iterations N      cap on Newton iterations (default: " << default_max_iterations
+     << ")\n"
+     << "  --report OUT.json       write a JSON report: status, message, e_sd, initial_e_sd,\n"
+     << "                          seam_length, seam_length_normalized, charts, iterations,\n"
+     << "                          topology_operations, lambda, bound_met, seconds, faces,\n"
+     << "                          vertices, input, output (default: no report)\n"
+     << "  --quiet                 no summary or notes on stderr; errors are still printed\n"
+     << "                          (default: off)\n"
+     << "  -h, --help              print this help and exit\n"
+     << "\n"
+     << "Exit status: 0 success (also when the iteration cap was reached: see the report),\n"
+     << "1 invalid input or failed run, 2 invalid options.\n";
+}
+
+bool parse_size(const std::string& s, std::size_t& value)
+{
+  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 18)
+    return false;
+  value = static_cast<std::size_t>(std::stoull(s));
+  return true;
+}
+
+Parse_status parse_options(int argc, char* argv[], Options& options, std::string& error)
+{
+  bool only_positionals = false;
+  for(int i = 1; i < argc; ++i)
+  {
+    std::string arg = argv[i];
+    if(only_positionals || arg.empty() || arg[0] != '-' || arg == "-")
+    {
+      if(!options.input.empty())
+      {
+        error = "unexpected argument '" + arg + "' (only one INPUT)";
+        return Parse_status::ERROR;
+      }
+      options.input = arg;
+      continue;
+    }
+    if(arg == "--")
+    {
+      only_positionals = true;
+      continue;
+    }
+
+    // "--name=value" and "--name value" are both accepted.
+    std::string name = arg, value;
+    bool has_inline_value = false;
+    const std::size_t eq = arg.find('=');
+    if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
+    {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+      has_inline_value = true;
+    }
+    auto take_value = [&](std::string& out) {
+      if(has_inline_value)
+        out = value;
+      else if(i + 1 < argc)
+        out = argv[++i];
+      else
+      {
+        error = "option '" + name + "' needs a value";
+        return false;
+      }
+      if(out.empty())
+      {
+        error = "option '" + name + "' needs a non-empty value";
+        return false;
+      }
+      return true;
+    };
+    auto no_value = [&]() {
+      if(has_inline_value)
+      {
+        error = "option '" + name + "' takes no value";
+        return false;
+      }
+      return true;
+    };
+
+    if(name == "-h" || name == "--help")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      return Parse_status::HELP;
+    }
+    else if(name == "-o" || name == "--output")
+    {
+      if(!take_value(options.output))
+        return Parse_status::ERROR;
+    }
+    else if(name == "--report")
+    {
+      if(!take_value(options.report))
+        return Parse_status::ERROR;
+    }
+    else if(name == "--keep-seams")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.keep_seams = true;
+    }
+    else if(name == "--quiet")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.quiet = true;
+    }
+    else if(name == "--max-iterations")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.max_iterations))
+      {
+        error = "option '--max-iterations' needs a non-negative integer, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
+    else
+    {
+      error = "unknown option '" + arg + "'";
+      return Parse_status::ERROR;
+    }
+  }
+  if(options.input.empty())
+  {
+    error = "missing INPUT";
+    return Parse_status::ERROR;
+  }
+  return Parse_status::RUN;
+}
+
+// ---------------------------------------------------------------------------
+// Everything the run learns, for the summary line and the JSON report.
+
+struct Run_report
+{
+  std::string status = "ERROR_INPUT";   // Error_code name, or a CLI-level ERROR_*
+  std::string message;
+  SMSO::Optimization_result result;
+  std::string input, output;
+  std::size_t faces = 0, vertices = 0;
+  double seconds = 0;                    // the optimization call
+  double total_seconds = 0;              // reading + optimization + writing
+};
+
+const char* status_name(SMSO::Error_code code)
+{
+  switch(code)
+  {
+    case SMSO::OK: return "OK";
+    case SMSO::WARNING_MAXIMUM_ITERATIONS: return "WARNING_MAXIMUM_ITERATIONS";
+    case SMSO::WARNING_CANCELLED: return "WARNING_CANCELLED";
+    case SMSO::WARNING_BOUND_NOT_MET: return "WARNING_BOUND_NOT_MET";
+    case SMSO::ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
+    case SMSO::ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
+    case SMSO::ERROR_NON_MANIFOLD_MESH: return "ERROR_NON_MANIFOLD_MESH";
+    case SMSO::ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
+    case SMSO::ERROR_DEGENERATE_TRIANGLE: return "ERROR_DEGENERATE_TRIANGLE";
+    case SMSO::ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
+    case SMSO::ERROR_INVALID_UV_MAP: return "ERROR_INVALID_UV_MAP";
+    case SMSO::ERROR_FLIPPED_UV_TRIANGLE: return "ERROR_FLIPPED_UV_TRIANGLE";
+    case SMSO::ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
+    case SMSO::ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
+    case SMSO::ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+  }
+  return "ERROR_UNKNOWN";
+}
+
+void append_json_string(std::string& out, const std::string& s)
+{
+  out += '"';
+  for(unsigned char c : s)
+  {
+    switch(c)
+    {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if(c < 0x20)
+        {
+          char buf[8];
+          std::snprintf(buf, sizeof(buf), "\\u%04x", c);
+          out += buf;
+        }
+        else
+          out += static_cast<char>(c);
+    }
+  }
+  out += '"';
+}
+
+// JSON has no inf/nan: a figure that was never computed is null.
+std::string json_number(double x, int digits = 17)
+{
+  if(!std::isfinite(x))
+    return "null";
+  char buf[40];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
+  return buf;
+}
+
+bool write_json_report(const std::string& path, const Run_report& r)
+{
+  const SMSO::Optimization_result& res = r.result;
+  std::vector<std::pair<std::string, std::string> > fields;
+  auto str = [](const std::string& s) { std::string o; append_json_string(o, s); return o; };
+  fields.emplace_back("status", str(r.status));
+  fields.emplace_back("message", str(r.message));
+  fields.emplace_back("input", str(r.input));
+  fields.emplace_back("output", r.output.empty() ? "null" : str(r.output));
+  fields.emplace_back("mode", str("keep_seams"));
+  fields.emplace_back("faces", std::to_string(r.faces));
+  fields.emplace_back("vertices", std::to_string(r.vertices));
+  fields.emplace_back("e_sd", json_number(res.distortion));
+  fields.emplace_back("initial_e_sd", json_number(res.initial_distortion));
+  fields.emplace_back("seam_length", json_number(res.seam_length));
+  fields.emplace_back("seam_length_normalized", json_number(res.seam_length_normalized));
+  fields.emplace_back("charts", std::to_string(res.charts));
+  fields.emplace_back("iterations", std::to_string(res.iterations));
+  fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
+  fields.emplace_back("lambda", json_number(res.lambda));
+  fields.emplace_back("bound_met", res.bound_met ? "true" : "false");
+  fields.emplace_back("seconds", json_number(r.seconds, 6));
+  fields.emplace_back("total_seconds", json_number(r.total_seconds, 6));
+
+  std::string out = "{\n";
+  for(std::size_t i = 0; i < fields.size(); ++i)
+  {
+    out += "  ";
+    append_json_string(out, fields[i].first);
+    out += ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");
+  }
+  out += "}\n";
+  std::ofstream os(path, std::ios::binary);
+  if(!os)
+    return false;
+  os << out;
+  os.close();
+  return static_cast<bool>(os);
+}
+
+// ---------------------------------------------------------------------------
+// Input
+
+struct Load_failure
+{
+  std::string status;   // Error_code name, or ERROR_INPUT when the file itself is the problem
+  std::string line;     // the stderr message after "optimize_seams: error: "
+};
+
+std::string lowercase_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+Load_failure code_failure(SMSO::Error_code code, const std::string& line)
+{
+  return Load_failure{status_name(code), line};
+}
+
+// Reads a polygon soup (so that defects can be named, where read_polygon_mesh
+// would only say "false"), checks it, and builds a triangle mesh.
+// Returns true on success; otherwise `failure` says why.
+bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& notes,
+               Load_failure& failure)
+{
+  std::error_code ec;
+  if(!std::filesystem::exists(path, ec))
+  {
+    failure = {"ERROR_INPUT", "cannot open input '" + path + "': No such file or directory"};
+    return false;
+  }
+  if(!std::filesystem::is_regular_file(path, ec))
+  {
+    failure = {"ERROR_INPUT", "cannot open input '" + path + "': not a regular file"};
+    return false;
+  }
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if(!probe)
+    {
+      failure = {"ERROR_INPUT", "cannot open input '" + path + "': " + std::strerror(errno)};
+      return false;
+    }
+  }
+  if(std::filesystem::file_size(path, ec) == 0 && !ec)
+  {
+    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh is empty (no face): '" + path + "'");
+    return false;
+  }
+  const std::string ext = lowercase_extension(path);
+  if(ext != ".obj" && ext != ".off" && ext != ".ply")
+  {
+    failure = {"ERROR_INPUT", "cannot read '" + path + "': unsupported format '" + ext +
+                              "' (expected .obj, .off or .ply)"};
+    return false;
+  }
+
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  bool read_ok = false;
+  {
+    // CGAL's readers may print parse details to std::cerr; keep stderr to one line.
+    std::ostringstream sink;
+    std::streambuf* old = std::cerr.rdbuf(sink.rdbuf());
+    try
+    {
+      read_ok = CGAL::IO::read_polygon_soup(path, points, polygons,
+                                            CGAL::parameters::verbose(false));
+    }
+    catch(...)
+    {
+      read_ok = false;
+    }
+    std::cerr.rdbuf(old);
+  }
+  if(!read_ok)
+  {
+    failure = {"ERROR_INPUT", "cannot read '" + path + "': not a valid " + ext.substr(1) + " file"};
+    return false;
+  }
+  if(polygons.empty() || points.empty())
+  {
+    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh is empty (no face): '" + path + "'");
+    return false;
+  }
+
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Point_3& p = points[i];
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+    {
+      failure = code_failure(SMSO::ERROR_NON_FINITE_COORDINATES,
+                             "input has a non-finite coordinate (vertex " + std::to_string(i + 1) + ")");
+      return false;
+    }
+  }
+
+  bool has_polygons = false;
+  std::vector<char> used(points.size(), 0);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const auto& poly = polygons[f];
+    if(poly.size() < 3)
+    {
+      failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
+                             "input face " + std::to_string(f + 1) + " has fewer than three corners");
+      return false;
+    }
+    has_polygons = has_polygons || poly.size() > 3;
+    for(std::size_t v : poly)
+    {
+      if(v >= points.size())
+      {
+        failure = {"ERROR_INPUT", "cannot read '" + path + "': face " + std::to_string(f + 1) +
+                                  " refers to a missing vertex"};
+        return false;
+      }
+      used[v] = 1;
+    }
+  }
+
+  // Zero-area triangles make the distortion energy infinite: refuse them here
+  // with the face number, rather than deep inside the solver.
+  std::size_t degenerate = 0, first_degenerate = 0;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const auto& poly = polygons[f];
+    bool bad = false;
+    for(std::size_t i = 0; i < poly.size() && !bad; ++i)
+      for(std::size_t j = i + 1; j < poly.size() && !bad; ++j)
+        bad = points[poly[i]] == points[poly[j]];
+    if(!bad && poly.size() == 3)
+      bad = CGAL::collinear(points[poly[0]], points[poly[1]], points[poly[2]]);
+    if(bad && degenerate++ == 0)
+      first_degenerate = f;
+  }
+  if(degenerate > 0)
+  {
+    failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
+                           "input has " + std::to_string(degenerate) +
+                           " zero-area (degenerate) face(s); the first is face " +
+                           std::to_string(first_degenerate + 1));
+    return false;
+  }
+
+  // Unreferenced points would become isolated vertices: drop them.
+  const std::size_t unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+  if(unused > 0)
+  {
+    std::vector<std::size_t> new_index(points.size());
+    std::vector<Point_3> kept;
+    kept.reserve(points.size() - unused);
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(used[i])
+      {
+        new_index[i] = kept.size();
+        kept.push_back(points[i]);
+      }
+    for(auto& poly : polygons)
+      for(std::size_t& v : poly)
+        v = new_index[v];
+    points.swap(kept);
+    notes.push_back("ignored " + std::to_string(unused) + " vertices used by no face");
+  }
+
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  {
+    // Inconsistent orientation is fixable; a non-manifold edge or vertex is not
+    // (orient_polygon_soup would have to duplicate points).
+    std::vector<Point_3> oriented_points = points;
+    std::vector<std::vector<std::size_t> > oriented = polygons;
+    const bool no_duplication = PMP::orient_polygon_soup(oriented_points, oriented);
+    if(no_duplication && oriented_points.size() == points.size() &&
+       PMP::is_polygon_soup_a_polygon_mesh(oriented))
+    {
+      polygons.swap(oriented);
+      notes.push_back("reoriented faces to a consistent orientation");
+    }
+    else
+    {
+      std::map<std::pair<std::size_t, std::size_t>, int> edge_faces;
+      for(const auto& poly : polygons)
+        for(std::size_t i = 0; i < poly.size(); ++i)
+        {
+          std::size_t a = poly[i], b = poly[(i + 1) % poly.size()];
+          ++edge_faces[std::make_pair(std::min(a, b), std::max(a, b))];
+        }
+      std::size_t bad_edges = 0;
+      for(const auto& e : edge_faces)
+        bad_edges += e.second > 2 ? 1 : 0;
+      std::string detail = "input is not a manifold mesh (non-manifold edge or vertex): ";
+      if(bad_edges > 0)
+        detail += std::to_string(bad_edges) + " edge(s) with more than two faces";
+      else
+        detail += "faces around a vertex do not form a single fan, or the surface is not orientable";
+      failure = code_failure(SMSO::ERROR_NON_MANIFOLD_MESH, detail);
+      return false;
+    }
+  }
+
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  if(has_polygons)
+  {
+    const std::size_t before = num_faces(mesh);
+    if(!PMP::triangulate_faces(mesh))
+    {
+      failure = code_failure(SMSO::ERROR_NON_TRIANGULAR_MESH,
+                             "input has a polygon that could not be triangulated");
+      return false;
+    }
+    notes.push_back("triangulated polygons: " + std::to_string(before) + " faces became " +
+                    std::to_string(num_faces(mesh)) + " triangles");
+    std::size_t bad = 0;
+    for(face_descriptor f : faces(mesh))
+      bad += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
+    if(bad > 0)
+    {
+      failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
+                             "input has " + std::to_string(bad) +
+                             " zero-area triangle(s) after triangulating its polygons");
+      return false;
+    }
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// Run
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string format_double(double x, int digits)
+{
+  if(!std::isfinite(x))
+    return "n/a";
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
+  return buf;
+}
+
+void print_error(const std::string& line)
+{
+  std::cerr << program_name << ": error: " << line << std::endl;
+}
+
+// Writes the report if one was asked for; a failure to do so is an error only
+// when nothing else failed (one error line per run).
+int finish(const Options& options, Run_report& report, std::chrono::steady_clock::time_point t0,
+           int exit_status)
+{
+  report.total_seconds = seconds_since(t0);
+  if(!options.report.empty() && !write_json_report(options.report, report))
+  {
+    if(exit_status == EXIT_OK)
+    {
+      print_error("cannot write report '" + options.report + "'");
+      return EXIT_RUN_FAILED;
+    }
+  }
+  return exit_status;
+}
+
+int run(const Options& options)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Run_report report;
+  report.input = options.input;
+
+  // Notes are printed only with the summary, so that a failure is exactly one line.
+  std::vector<std::string> notes;
+  if(!options.keep_seams)
+    notes.push_back("seam optimization is not available yet; running in --keep-seams mode");
+
+  Mesh mesh;
+  Load_failure failure;
+  if(!load_mesh(options.input, mesh, notes, failure))
+  {
+    report.status = failure.status;
+    report.message = failure.line;
+    print_error(failure.line);
+    return finish(options, report, t0, EXIT_RUN_FAILED);
+  }
+  report.faces = num_faces(mesh);
+  report.vertices = num_vertices(mesh);
+
+  auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
+  auto seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
+
+  const auto t_opt = std::chrono::steady_clock::now();
+  report.result = SMSO::minimize_distortion(
+    mesh, uvmap,
+    SMSO::parameters::combine(SMSO::parameters::edge_is_seam_map(seams),
+                              SMSO::parameters::maximum_number_of_iterations(options.max_iterations)));
+  report.seconds = seconds_since(t_opt);
+  const SMSO::Optimization_result& res = report.result;
+  report.status = status_name(res.status);
+  report.message = res.message;
+
+  if(!res.has_result())
+  {
+    std::string line = SMSO::get_error_message(res.status);
+    if(!res.message.empty())
+      line += ": " + res.message;
+    print_error(line);
+    return finish(options, report, t0, EXIT_RUN_FAILED);
+  }
+
+  report.output = options.output.empty()
+                    ? std::filesystem::path(options.input).stem().string() + "_uv.obj"
+                    : options.output;
+  if(!SMSO::IO::write_OBJ_with_uv_map(report.output, mesh, uvmap))
+  {
+    const std::string out = report.output;
+    report.output.clear();
+    report.status = "ERROR_OUTPUT";
+    report.message = "cannot write '" + out + "'";
+    print_error(report.message);
+    return finish(options, report, t0, EXIT_RUN_FAILED);
+  }
+
+  if(!options.quiet)
+  {
+    for(const std::string& n : notes)
+      std::cerr << program_name << ": note: " << n << std::endl;
+    if(res.status != SMSO::OK)
+      std::cerr << program_name << ": warning: " << SMSO::get_error_message(res.status)
+                << (res.message.empty() ? "" : ": " + res.message) << std::endl;
+    std::cerr << program_name << ": "
+              << std::filesystem::path(options.input).filename().string() << ": "
+              << report.faces << " faces, " << res.charts << (res.charts == 1 ? " chart" : " charts")
+              << ", E_SD " << format_double(res.initial_distortion, 6) << " -> "
+              << format_double(res.distortion, 6) << " in " << res.iterations << " iterations ("
+              << format_double(report.seconds, 3) << " s), normalized seam length "
+              << format_double(res.seam_length_normalized, 4) << "; wrote "
+              << report.output << std::endl;
+  }
+  return finish(options, report, t0, EXIT_OK);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // Nothing may escape as an uncaught exception: a crash is never an answer.
+  try
+  {
+    Options options;
+    std::string error;
+    switch(parse_options(argc, argv, options, error))
+    {
+      case Parse_status::HELP:
+        print_help(std::cout);
+        return EXIT_OK;
+      case Parse_status::ERROR:
+        print_error(error + " (see --help)");
+        return EXIT_USAGE;
+      case Parse_status::RUN:
+        break;
+    }
+    return run(options);
+  }
+  catch(const std::bad_alloc&)
+  {
+    print_error("out of memory");
+  }
+  catch(const std::exception& e)
+  {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    print_error("internal error: " + what);
+  }
+  catch(...)
+  {
+    print_error("internal error: unknown exception");
+  }
+  return EXIT_RUN_FAILED;
+}
