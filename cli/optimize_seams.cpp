@@ -57,7 +57,7 @@ const char* const program_name = "optimize_seams";
 enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
 
 // Always passed to the library, so --help can state the cap in force.
-const std::size_t default_max_iterations = 1000;
+const std::size_t default_max_iterations = 10000;   // the library's default too
 
 // ---------------------------------------------------------------------------
 // Options
@@ -84,8 +84,9 @@ void print_help(std::ostream& os)
      << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
      << "                          three corners are triangulated (a note says so); a\n"
      << "                          non-manifold mesh or a zero-area triangle is an error.\n"
-     << "                          In this version the mesh must be a topological disk\n"
-     << "                          (or several), as the seams are not optimized yet.\n"
+     << "                          Seams are not optimized yet: the mesh must be a\n"
+     << "                          topological disk, or closed of genus 0 (then cut open by\n"
+     << "                          a two-edge slit).\n"
      << "\n"
      << "Options:\n"
      << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
