@@ -6,24 +6,214 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/Sparse_solver_traits.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_maps.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
+namespace internal {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// Minimizes the distortion energy of a UV map whose seams are fixed
-/// (work in progress: the real body lands with the core).
+// Fills the figures of `r` (E_SD, seams, charts) from the core mesh.
+inline void measure_result(const Cut_mesh& cm, Optimization_result& r)
+{
+  r.distortion = total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
+  r.seam_length = cm.seam_length();
+  r.seam_length_normalized = r.seam_length / cm.normalization_radius();
+  std::vector<int> chart;
+  r.charts = cm.compute_charts(chart);
+}
+
+// Builds the core mesh with its initial UVs: the user's map, or a computed
+// one (cut to disks along the given seams, Tutte per chart).
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                               Cut_mesh& cm, Face_graph_copy<TriangleMesh>& copy, std::string& message)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::property_traits<UVMap>::value_type Point_2;
+
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  Error_code ec = copy_face_graph(tm, vpm, cm, copy, message);
+  if(ec != OK) return ec;
+
+  const bool use_input = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
+  constexpr bool has_seam_map =
+    !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value;
+
+  std::vector<char> seam(cm.corner_vertex.size(), 0);
+  std::vector<double> corner_uvs;
+  auto read_seams = [&](auto seam_map) {
+    for(std::size_t h = 0; h < seam.size(); ++h)
+      seam[h] = cm.opposite[h] >= 0 && bool(get(seam_map, edge(copy.corner_halfedge[h], tm)));
+  };
+
+  if(use_input)
+  {
+    ec = read_uv_map(tm, uvmap, copy, corner_uvs, message);
+    if(ec != OK) return ec;
+    if constexpr(has_seam_map)
+      read_seams(get_parameter(np, internal_np::edge_is_seam_map));
+    else
+      seams_from_corner_uvs(cm, corner_uvs, seam);
+  }
+  else
+  {
+    auto scratch_seams = make_edge_vector_map<bool>(tm, false);
+    if constexpr(has_seam_map)
+    {
+      auto user_seams = get_parameter(np, internal_np::edge_is_seam_map);
+      for(auto e : edges(tm)) put(scratch_seams, e, bool(get(user_seams, e)));
+    }
+    auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
+    ec = compute_initial_parameterization(tm, scratch_seams, scratch_uv,
+                                          CGAL::parameters::vertex_point_map(vpm));
+    if(ec != OK) { message = "could not compute the initial map"; return ec; }
+    read_seams(scratch_seams);
+    ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
+    if(ec != OK) return ec;
+  }
+  label_uv_vertices(cm, seam);
+  set_uvs_from_corners(cm, corner_uvs);
+
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+  {
+    if(!(cm.signed_uv_area2(f) > 0))
+    {
+      message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
+      return ERROR_FLIPPED_UV_TRIANGLE;
+    }
+  }
+  return OK;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Minimizes the distortion energy (symmetric Dirichlet by default) of a UV
+/// map whose seams are fixed: projected Newton with a flip-free line search,
+/// the boundary of every chart free.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam UVMap a read-write property map `halfedge_descriptor -> Point_2`;
+///   for every halfedge `h` with a face, `get(uvmap, h)` is the UV of
+///   `target(h)` in `face(h)`.
+///
+/// \param tm the mesh; it must be a topological disk, a closed genus-0
+///   surface (then cut by a two-edge slit), or cut into such charts by the
+///   seams of `edge_is_seam_map`; with `use_uv_map_as_initial`, any charts.
+/// \param uvmap receives the result; read as the initial map with `use_uv_map_as_initial(true)`
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{a read-write property map `edge_descriptor -> bool`: the fixed seams
+///       (read unless the seams come from the input UV map), written with the final seams}
+///     \cgalParamDefault{no seam map: seams implied by the UV map, or none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_uv_map_as_initial}
+///     \cgalParamDescription{start from the UVs in `uvmap` (validated: finite, no flipped triangle)}
+///     \cgalParamDefault{`false`: circle boundary + Tutte per chart}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{a model of `SparseSolverTraits`}
+///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_number_of_iterations}
+///     \cgalParamDescription{cap on Newton iterations}
+///     \cgalParamDefault{`10000`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{gradient_tolerance}
+///     \cgalParamDescription{stop when the scale-free squared gradient norm falls below it}
+///     \cgalParamDefault{`1e-12`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the status (the user's maps are untouched unless `has_result()`),
+///   E_SD of the result, seam length, charts, iterations.
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
                                         const NamedParameters& np = parameters::default_values())
 {
-  (void)tm; (void)uvmap; (void)np;
-  Optimization_result r;
-  r.status = ERROR_WRONG_PARAMETER;
-  r.message = "not implemented yet";
-  return r;
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Optimization_result result;
+
+  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+  auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
+                                 Eigen_simplicial_ldlt_traits());
+  const std::size_t max_iterations =
+    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(10000));
+  internal::Newton_settings settings;
+  settings.gradient_tolerance =
+    choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);
+  if(!(settings.gradient_tolerance >= 0))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    result.message = "gradient_tolerance must be >= 0";
+    return result;
+  }
+
+  internal::Cut_mesh cm;
+  internal::Face_graph_copy<TriangleMesh> copy;
+  result.status = internal::initialize_cut_mesh(tm, uvmap, np, cm, copy, result.message);
+  if(result.status != OK) return result;
+
+  internal::rescale_to_optimal(cm, energy);
+  result.initial_distortion = internal::total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
+
+  typedef std::remove_cv_t<decltype(energy)> Energy;
+  internal::Projected_newton<Energy, decltype(solver)> newton(cm, energy, solver, settings);
+  if(!newton.rebuild_pattern())
+  {
+    result.status = ERROR_LINEAR_SOLVER;
+    result.message = "symbolic factorization failed";
+    return result;
+  }
+  result.status = WARNING_MAXIMUM_ITERATIONS;
+  while(newton.iterations() < max_iterations)
+  {
+    const internal::Newton_status s = newton.step();
+    if(s == internal::NEWTON_CONVERGED) { result.status = OK; break; }
+    if(s == internal::NEWTON_SOLVER_FAILED)
+    {
+      result.status = ERROR_LINEAR_SOLVER;
+      result.message = "numeric factorization failed";
+      return result;
+    }
+  }
+  result.iterations = newton.iterations();
+
+  internal::write_uv_map(cm, copy, uvmap);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+    internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
+  internal::measure_result(cm, result);
+  result.bound_met = true;
+  result.seconds = timer.time();
+  return result;
 }
 
 } // namespace Surface_mesh_seam_optimization

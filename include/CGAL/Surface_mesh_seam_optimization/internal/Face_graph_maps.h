@@ -55,11 +55,35 @@ auto make_halfedge_vector_map(const TriangleMesh& tm, const Value& init = Value(
   return Indexed_vector_map<decltype(him), Value>(him, num_halfedges(tm), init);
 }
 
+// Keyed by edge through the index of its canonical halfedge: edge index maps
+// are not available for every FaceGraph (Polyhedron_3 without ids).
+template <typename TriangleMesh, typename HalfedgeIndexMap, typename Value>
+class Edge_vector_map
+{
+public:
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor key_type;
+  typedef Value value_type;
+  typedef Value& reference;
+  typedef boost::lvalue_property_map_tag category;
+
+  Edge_vector_map() {}
+  Edge_vector_map(const TriangleMesh& tm, HalfedgeIndexMap him, const Value& init)
+    : m_tm(&tm), m_map(him, num_halfedges(tm), init) {}
+
+  reference operator[](const key_type& e) const { return m_map[halfedge(e, *m_tm)]; }
+  friend reference get(const Edge_vector_map& m, const key_type& e) { return m[e]; }
+  friend void put(const Edge_vector_map& m, const key_type& e, const Value& v) { m[e] = v; }
+
+private:
+  const TriangleMesh* m_tm = nullptr;
+  Indexed_vector_map<HalfedgeIndexMap, Value> m_map;
+};
+
 template <typename Value, typename TriangleMesh>
 auto make_edge_vector_map(const TriangleMesh& tm, const Value& init = Value())
 {
-  auto eim = CGAL::get_initialized_edge_index_map(tm);
-  return Indexed_vector_map<decltype(eim), Value>(eim, num_edges(tm), init);
+  auto him = CGAL::get_initialized_halfedge_index_map(tm);
+  return Edge_vector_map<TriangleMesh, decltype(him), Value>(tm, him, init);
 }
 
 } // namespace internal

@@ -1,0 +1,114 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Measures of any per-corner UV map: distortion, seam length, flips, charts.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_MEASURE_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_MEASURE_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Figures of a UV map, as computed by `measure_uv_map()`.
+struct Uv_map_measures
+{
+  Error_code status = OK;          ///< not `OK` if the mesh or the map is invalid
+  std::string message;
+  double distortion = std::numeric_limits<double>::infinity(); ///< area-weighted mean energy (E_SD by default); +inf with a flipped triangle
+  double seam_length = 0;          ///< 3D length of the seam edges, each once (input boundary excluded)
+  double seam_length_normalized = 0; ///< seam_length / sqrt(area / pi)
+  std::size_t flipped_triangles = 0; ///< UV triangles with non-positive signed area
+  std::size_t charts = 0;          ///< faces joined across non-seam edges
+};
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Measures a per-corner UV map: seams are the edges whose two sides have
+/// different UVs (or those of `edge_is_seam_map` if given).
+/// Named parameters: `vertex_point_map`, `edge_is_seam_map`, `energy`.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Uv_map_measures measure_uv_map(const TriangleMesh& tm, UVMap uvmap,
+                               const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Uv_map_measures m;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+
+  internal::Cut_mesh cm;
+  internal::Face_graph_copy<TriangleMesh> copy;
+  m.status = internal::copy_face_graph(tm, vpm, cm, copy, m.message);
+  if(m.status != OK) return m;
+  std::vector<double> corner_uvs;
+  m.status = internal::read_uv_map(tm, uvmap, copy, corner_uvs, m.message);
+  if(m.status != OK) return m;
+  std::vector<char> seam;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+  {
+    auto seam_map = get_parameter(np, internal_np::edge_is_seam_map);
+    seam.assign(cm.corner_vertex.size(), 0);
+    for(std::size_t h = 0; h < seam.size(); ++h)
+      seam[h] = cm.opposite[h] >= 0 && bool(get(seam_map, edge(copy.corner_halfedge[h], tm)));
+  }
+  else
+    internal::seams_from_corner_uvs(cm, corner_uvs, seam);
+  internal::label_uv_vertices(cm, seam);
+  internal::set_uvs_from_corners(cm, corner_uvs);
+
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+    if(!(cm.signed_uv_area2(f) > 0)) ++m.flipped_triangles;
+  m.distortion = internal::total_energy(cm, energy, cm.uv.data());
+  m.seam_length = cm.seam_length();
+  m.seam_length_normalized = m.seam_length / cm.normalization_radius();
+  std::vector<int> chart;
+  m.charts = cm.compute_charts(chart);
+  return m;
+}
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// E_SD (or the energy of the `energy` named parameter) of a UV map; +inf if a triangle is flipped.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+double distortion(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
+{
+  return measure_uv_map(tm, uvmap, np).distortion;
+}
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Seam length; normalized by sqrt(area / pi) if `normalized`.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+double seam_length(const TriangleMesh& tm, UVMap uvmap, bool normalized = false,
+                   const NamedParameters& np = parameters::default_values())
+{
+  const Uv_map_measures m = measure_uv_map(tm, uvmap, np);
+  return normalized ? m.seam_length_normalized : m.seam_length;
+}
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Number of UV triangles with non-positive signed area.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t number_of_flipped_triangles(const TriangleMesh& tm, UVMap uvmap,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  return measure_uv_map(tm, uvmap, np).flipped_triangles;
+}
+
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

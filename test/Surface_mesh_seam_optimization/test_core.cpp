@@ -1,0 +1,378 @@
+// Core data model, element derivatives, flip-free step, measures, named parameters.
+#define BOOST_TEST_MODULE core
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/Sparse_solver_traits.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef K::Point_2 Point_2;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Surface_mesh;
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
+namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+namespace SMSO_np = CGAL::Surface_mesh_seam_optimization::parameters;
+using SMSO::internal::Cut_mesh;
+
+namespace {
+
+// A planar n x n grid (z = 0) with jittered interior vertices.
+Surface_mesh planar_grid(int n, unsigned seed)
+{
+  Surface_mesh sm;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const bool inner = i > 0 && j > 0 && i < n && j < n;
+      v.push_back(sm.add_vertex(Point_3(i + (inner ? jitter(rng) : 0.), j + (inner ? jitter(rng) : 0.), 0.)));
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      auto a = v[j*(n+1)+i], b = v[j*(n+1)+i+1], c = v[(j+1)*(n+1)+i+1], d = v[(j+1)*(n+1)+i];
+      sm.add_face(a, b, c);
+      sm.add_face(a, c, d);
+    }
+  return sm;
+}
+
+template <typename Mesh>
+Mesh read_mesh(const std::string& name)
+{
+  Mesh m;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/" + name, m));
+  return m;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(named_parameters_combine_in_any_order)
+{
+  Surface_mesh sm;
+  auto vpm = get(CGAL::vertex_point, sm);
+  using namespace SMSO_np;
+  auto a = combine(distortion_bound(4.2), seam_weight(0.05), CGAL::parameters::vertex_point_map(vpm));
+  auto b = combine(CGAL::parameters::vertex_point_map(vpm).number_of_iterations(7), seam_weight(0.05),
+                   distortion_bound(4.2), default_values());
+  BOOST_TEST(choose_parameter(get_parameter(a, SMSO::internal_np::distortion_bound), 0.) == 4.2);
+  BOOST_TEST(choose_parameter(get_parameter(b, SMSO::internal_np::distortion_bound), 0.) == 4.2);
+  BOOST_TEST(choose_parameter(get_parameter(a, SMSO::internal_np::seam_weight), 0.) == 0.05);
+  BOOST_TEST(choose_parameter(get_parameter(b, SMSO::internal_np::seam_weight), 0.) == 0.05);
+  BOOST_TEST(choose_parameter(get_parameter(b, CGAL::internal_np::number_of_iterations), 0) == 7);
+  BOOST_TEST((is_default_parameter<decltype(a), SMSO::internal_np::bijective_t>::value));
+  BOOST_TEST((!is_default_parameter<decltype(a), CGAL::internal_np::vertex_point_t>::value));
+  // a parameter given twice keeps its first value
+  auto c = combine(distortion_bound(4.3), distortion_bound(4.5));
+  BOOST_TEST(choose_parameter(get_parameter(c, SMSO::internal_np::distortion_bound), 0.) == 4.3);
+}
+
+BOOST_AUTO_TEST_CASE(isometric_map_of_a_flat_patch_has_energy_exactly_four)
+{
+  Surface_mesh sm = planar_grid(8, 1);
+  auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv").first;
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  for(auto h : sm.halfedges())
+    if(!sm.is_border(h))
+    {
+      const Point_3& p = sm.point(sm.target(h));
+      uv[h] = Point_2(c * p.x() - s * p.y() + 3., s * p.x() + c * p.y() - 1.);
+    }
+  const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
+  BOOST_TEST(m.status == SMSO::OK);
+  BOOST_TEST(std::abs(m.distortion - 4.) < 1e-12);
+  BOOST_TEST(m.flipped_triangles == 0u);
+  BOOST_TEST(m.charts == 1u);
+  BOOST_TEST(m.seam_length == 0.);
+
+  // Scaling by (2, 1/2) along x/y: s1 = 2, s2 = 1/2 everywhere: 4 + 1/4 + 1/4 + 4.
+  for(auto h : sm.halfedges())
+    if(!sm.is_border(h))
+    {
+      const Point_3& p = sm.point(sm.target(h));
+      uv[h] = Point_2(2. * p.x(), 0.5 * p.y());
+    }
+  BOOST_TEST(std::abs(SMSO::distortion(sm, uv) - 8.5) < 1e-12);
+  // Mirrored: every triangle flipped, energy infinite.
+  for(auto h : sm.halfedges())
+    if(!sm.is_border(h)) uv[h] = Point_2(-uv[h].x(), uv[h].y());
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == sm.number_of_faces());
+  BOOST_TEST(std::isinf(SMSO::distortion(sm, uv)));
+}
+
+BOOST_AUTO_TEST_CASE(element_derivatives_match_finite_differences)
+{
+  // One triangle with a random rest shape and random positive UVs.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1., 1.);
+  const SMSO::Symmetric_Dirichlet_energy energy;
+  for(int trial = 0; trial < 50; ++trial)
+  {
+    Cut_mesh cm;
+    cm.points = { 0, 0, 0, 1 + 0.3 * U(rng), 0.2 * U(rng), 0.1 * U(rng), 0.3 * U(rng), 1 + 0.3 * U(rng), 0.2 * U(rng) };
+    cm.corner_vertex = { 0, 1, 2 };
+    cm.opposite = { -1, -1, -1 };
+    cm.corner_uv = { 0, 1, 2 };
+    cm.uv_vertex = { 0, 1, 2 };
+    cm.compute_rest_shape();
+    do {
+      cm.uv = { U(rng), U(rng), 1 + U(rng), U(rng), U(rng), 1 + U(rng) };
+    } while(cm.signed_uv_area2(0) < 0.2);
+
+    auto face_energy = [&](const std::vector<double>& x) {
+      Eigen::Matrix2d J;
+      SMSO::internal::face_jacobian(cm, 0, x.data(), J);
+      return energy.value(J);
+    };
+    Eigen::Matrix2d J, dJ;
+    Eigen::Matrix4d HJ;
+    SMSO::internal::face_jacobian(cm, 0, cm.uv.data(), J);
+    energy.value_gradient_and_hessian(J, dJ, HJ, false);
+    const SMSO::internal::Jacobian_coefficients k(&cm.rest_inverse[0]);
+    double g[6];
+    Eigen::Matrix<double, 6, 6> H;
+    SMSO::internal::element_derivatives(k, 1., dJ, HJ, g, &H);
+
+    const double h = 1e-6;
+    double max_g = 0, max_h = 0, err_g = 0, err_h = 0;
+    for(int i = 0; i < 6; ++i)
+    {
+      std::vector<double> xp = cm.uv, xm = cm.uv;
+      xp[i] += h; xm[i] -= h;
+      const double fd = (face_energy(xp) - face_energy(xm)) / (2 * h);
+      err_g = (std::max)(err_g, std::abs(fd - g[i]));
+      max_g = (std::max)(max_g, std::abs(g[i]));
+      // Hessian column i by differences of the analytic gradient
+      double gp[6], gm[6];
+      Eigen::Matrix2d Jp, Jm, dJp, dJm;
+      SMSO::internal::face_jacobian(cm, 0, xp.data(), Jp);
+      SMSO::internal::face_jacobian(cm, 0, xm.data(), Jm);
+      energy.value_and_gradient(Jp, dJp);
+      energy.value_and_gradient(Jm, dJm);
+      SMSO::internal::element_derivatives(k, 1., dJp, HJ, gp, nullptr);
+      SMSO::internal::element_derivatives(k, 1., dJm, HJ, gm, nullptr);
+      for(int j = 0; j < 6; ++j)
+      {
+        err_h = (std::max)(err_h, std::abs((gp[j] - gm[j]) / (2 * h) - H(j, i)));
+        max_h = (std::max)(max_h, std::abs(H(j, i)));
+      }
+    }
+    BOOST_TEST(err_g <= 1e-6 * (1 + max_g));
+    BOOST_TEST(err_h <= 1e-5 * (1 + max_h));
+    BOOST_TEST((H - H.transpose()).norm() <= 1e-9 * H.norm());
+  }
+}
+
+BOOST_AUTO_TEST_CASE(flip_free_step_is_tight_and_newton_never_flips)
+{
+  // Jittered grid, UV = positions plus a small smooth distortion: random
+  // directions must be cut exactly where the first triangle degenerates.
+  Surface_mesh sm = planar_grid(10, 2);
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = p[0] + 0.05 * std::sin(p[1]);
+    cm.uv[2*u+1] = p[1] + 0.05 * std::cos(p[0]);
+  }
+  std::mt19937 rng(3);
+  std::normal_distribution<double> N(0., 1.);
+  int tight = 0;
+  for(int trial = 0; trial < 200; ++trial)
+  {
+    std::vector<double> dir(cm.uv.size());
+    for(double& d : dir) d = N(rng);
+    const double t = SMSO::internal::max_flip_free_step(cm, cm.uv.data(), dir.data());
+    BOOST_REQUIRE(t > 0);
+    if(!std::isfinite(t)) continue;
+    auto min_area = [&](double s) {
+      Cut_mesh moved = cm;
+      for(std::size_t i = 0; i < dir.size(); ++i) moved.uv[i] += s * dir[i];
+      double a = HUGE_VAL;
+      for(std::size_t f = 0; f < moved.number_of_faces(); ++f) a = (std::min)(a, moved.signed_uv_area2(f));
+      return a;
+    };
+    BOOST_TEST(min_area(0.99 * t) > 0);
+    if(min_area(1.01 * t) < 0) ++tight;
+  }
+  BOOST_TEST(tight > 150); // the bound is the first flip, not a loose underestimate
+
+  // Projected Newton from a strongly distorted start: every iterate flip-free.
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u) cm.uv[2*u] *= 3.;
+  const SMSO::Symmetric_Dirichlet_energy energy;
+  SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
+    newton(cm, energy, SMSO::Eigen_simplicial_ldlt_traits());
+  BOOST_REQUIRE(newton.rebuild_pattern());
+  double previous = newton.energy();
+  for(int it = 0; it < 30; ++it)
+  {
+    const auto status = newton.step();
+    BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
+    for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
+    BOOST_TEST(newton.energy() <= previous);
+    previous = newton.energy();
+    if(status == SMSO::internal::NEWTON_CONVERGED) break;
+  }
+  // A flat patch is developable: the optimum is an isometry.
+  BOOST_TEST(std::abs(newton.energy() - 4.) < 1e-6);
+}
+
+template <typename Mesh>
+void check_uv_and_seam_round_trip(const Mesh& tm)
+{
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::edge_descriptor edge_descriptor;
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(tm, get(CGAL::vertex_point, tm), cm, copy, msg) == SMSO::OK);
+
+  // Seams: every interior edge whose lower vertex index is a multiple of 7.
+  std::vector<char> seam(cm.corner_vertex.size(), 0);
+  std::size_t seam_edges = 0;
+  for(std::size_t h = 0; h < seam.size(); ++h)
+  {
+    const int o = cm.opposite[h];
+    if(o < 0) continue;
+    const int a = cm.corner_vertex[h], b = cm.corner_vertex[Cut_mesh::prev(int(h))];
+    seam[h] = ((std::min)(a, b) % 7 == 0);
+    if(seam[h] && o > int(h)) ++seam_edges;
+  }
+  SMSO::internal::label_uv_vertices(cm, seam);
+  BOOST_TEST(cm.number_of_uv_vertices() > cm.number_of_vertices());
+  // Only edges that separate corners are UV discontinuities (an isolated
+  // marked edge with interior endpoints is not): those are the seams.
+  seam_edges = 0;
+  for(std::size_t h = 0; h < seam.size(); ++h)
+  {
+    seam[h] = cm.is_seam(int(h));
+    if(seam[h] && cm.opposite[h] > int(h)) ++seam_edges;
+  }
+  BOOST_TEST(seam_edges > 50u);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0., 1.);
+  for(double& x : cm.uv) x = U(rng);
+
+  std::map<halfedge_descriptor, Point_2> uv_storage;
+  std::map<edge_descriptor, bool> seam_storage;
+  boost::associative_property_map<std::map<halfedge_descriptor, Point_2> > uvmap(uv_storage);
+  boost::associative_property_map<std::map<edge_descriptor, bool> > seam_map(seam_storage);
+  SMSO::internal::write_uv_map(cm, copy, uvmap);
+  SMSO::internal::write_seam_map(tm, cm, copy, seam_map);
+
+  // every halfedge with a face written, with the UV of its target corner
+  std::size_t written = 0;
+  for(halfedge_descriptor h : halfedges(tm))
+    if(!is_border(h, tm)) { BOOST_REQUIRE(uv_storage.count(h) == 1); ++written; }
+  BOOST_TEST(written == 3 * num_faces(tm));
+  std::size_t seams_written = 0;
+  for(auto& kv : seam_storage) seams_written += kv.second;
+  BOOST_TEST(seams_written == seam_edges);
+
+  // Read back: seams implied by the UVs equal the seam map, same labelling.
+  SMSO::internal::Cut_mesh back;
+  SMSO::internal::Face_graph_copy<Mesh> copy2;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(tm, get(CGAL::vertex_point, tm), back, copy2, msg) == SMSO::OK);
+  std::vector<double> corner_uvs;
+  BOOST_REQUIRE(SMSO::internal::read_uv_map(tm, uvmap, copy2, corner_uvs, msg) == SMSO::OK);
+  std::vector<char> implied;
+  SMSO::internal::seams_from_corner_uvs(back, corner_uvs, implied);
+  BOOST_TEST((implied == seam));
+  for(std::size_t h = 0; h < implied.size(); ++h)
+    if(back.opposite[h] >= 0)
+      BOOST_REQUIRE(bool(implied[h]) == seam_storage[edge(copy2.corner_halfedge[h], tm)]);
+  SMSO::internal::label_uv_vertices(back, implied);
+  SMSO::internal::set_uvs_from_corners(back, corner_uvs);
+  BOOST_TEST((back.corner_uv == cm.corner_uv));
+  double max_diff = 0;
+  for(std::size_t i = 0; i < cm.uv.size(); ++i) max_diff = (std::max)(max_diff, std::abs(back.uv[i] - cm.uv[i]));
+  BOOST_TEST(max_diff < 1e-15);
+}
+
+BOOST_AUTO_TEST_CASE(uv_and_seam_maps_round_trip_on_surface_mesh_and_polyhedron)
+{
+  check_uv_and_seam_round_trip(read_mesh<Surface_mesh>("cat_f1500.obj"));
+  check_uv_and_seam_round_trip(read_mesh<Polyhedron>("cat_f1500.obj"));
+}
+
+BOOST_AUTO_TEST_CASE(invalid_input_gives_an_error_and_leaves_the_maps_untouched)
+{
+  const Point_2 sentinel(-7., -7.);
+  auto all_sentinel = [&](const Surface_mesh& sm, const Surface_mesh::Property_map<Surface_mesh::Halfedge_index, Point_2>& uv) {
+    for(auto h : sm.halfedges()) if(uv[h] != sentinel) return false;
+    return true;
+  };
+  {
+    Surface_mesh empty;
+    auto uv = empty.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv", sentinel).first;
+    BOOST_TEST(SMSO::minimize_distortion(empty, uv).status == SMSO::ERROR_EMPTY_MESH);
+  }
+  {
+    Surface_mesh sm = planar_grid(4, 3);
+    sm.point(Surface_mesh::Vertex_index(7)) = Point_3(std::nan(""), 0, 0);
+    auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv", sentinel).first;
+    const auto r = SMSO::minimize_distortion(sm, uv);
+    BOOST_TEST(r.status == SMSO::ERROR_NON_FINITE_COORDINATES);
+    BOOST_TEST(!r.has_result());
+    BOOST_TEST(all_sentinel(sm, uv));
+  }
+  {
+    Surface_mesh sm = planar_grid(4, 3);
+    // collapse vertex 6 onto vertex 7: the triangles between them get zero area
+    sm.point(Surface_mesh::Vertex_index(6)) = sm.point(Surface_mesh::Vertex_index(7));
+    auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv", sentinel).first;
+    BOOST_TEST(SMSO::minimize_distortion(sm, uv).status == SMSO::ERROR_DEGENERATE_TRIANGLE);
+    BOOST_TEST(all_sentinel(sm, uv));
+  }
+  {
+    // a user's initial map with one flipped triangle
+    Surface_mesh sm = planar_grid(4, 3);
+    auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv").first;
+    for(auto h : sm.halfedges())
+      if(!sm.is_border(h)) uv[h] = Point_2(sm.point(sm.target(h)).x(), sm.point(sm.target(h)).y());
+    const auto v = Surface_mesh::Vertex_index(6); // interior vertex pushed across its 1-ring
+    for(auto h : CGAL::halfedges_around_target(sm.halfedge(v), sm))
+      if(!sm.is_border(h)) uv[h] = Point_2(5., 5.);
+    std::map<Surface_mesh::Halfedge_index, Point_2> before;
+    for(auto h : sm.halfedges()) before[h] = uv[h];
+    const auto r = SMSO::minimize_distortion(sm, uv, SMSO_np::use_uv_map_as_initial(true));
+    BOOST_TEST(r.status == SMSO::ERROR_FLIPPED_UV_TRIANGLE);
+    BOOST_TEST(!r.message.empty());
+    bool untouched = true;
+    for(auto h : sm.halfedges()) untouched = untouched && (before[h] == uv[h]);
+    BOOST_TEST(untouched);
+  }
+  {
+    Surface_mesh sm = planar_grid(4, 3);
+    auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv", sentinel).first;
+    BOOST_TEST(SMSO::minimize_distortion(sm, uv, SMSO_np::gradient_tolerance(-1.)).status == SMSO::ERROR_WRONG_PARAMETER);
+    BOOST_TEST(all_sentinel(sm, uv));
+  }
+}
