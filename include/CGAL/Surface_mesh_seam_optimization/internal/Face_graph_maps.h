@@ -68,14 +68,21 @@ public:
 
   Edge_vector_map() {}
   Edge_vector_map(const TriangleMesh& tm, HalfedgeIndexMap him, const Value& init)
-    : m_tm(&tm), m_map(him, num_halfedges(tm), init) {}
+    : m_tm(&tm), m_index(him), m_map(him, num_halfedges(tm), init) {}
 
-  reference operator[](const key_type& e) const { return m_map[halfedge(e, *m_tm)]; }
+  // An edge descriptor may wrap either of its halfedges (Surface_mesh does):
+  // key by the one with the smaller index.
+  reference operator[](const key_type& e) const
+  {
+    const auto h = halfedge(e, *m_tm), o = opposite(h, *m_tm);
+    return m_map[get(m_index, h) < get(m_index, o) ? h : o];
+  }
   friend reference get(const Edge_vector_map& m, const key_type& e) { return m[e]; }
   friend void put(const Edge_vector_map& m, const key_type& e, const Value& v) { m[e] = v; }
 
 private:
   const TriangleMesh* m_tm = nullptr;
+  HalfedgeIndexMap m_index;
   Indexed_vector_map<HalfedgeIndexMap, Value> m_map;
 };
 

@@ -1,0 +1,299 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// OptCuts on the core arrays: descent (projected Newton, with fracture
+// propagation), topology steps at stationary points, and the dual update of
+// lambda for a distortion bound; the best feasible configuration is kept.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_ALTERNATING_OPTIMIZATION_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_ALTERNATING_OPTIMIZATION_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+struct Alternating_settings
+{
+  double distortion_bound = 4.1;
+  bool fixed_lambda = false;
+  double lambda = 0.999;            // initial (bound mode) or fixed value
+  double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
+  std::size_t max_iterations = 100000;
+  Newton_settings newton;
+};
+
+template <typename Energy, typename SolverTraits, typename Visitor>
+class Alternating_optimization
+{
+public:
+  Alternating_optimization(Cut_mesh& cm, const Energy& energy, const SolverTraits& solver,
+                           const std::vector<double>& halfedge_weight, const Alternating_settings& settings,
+                           Visitor& visitor)
+    : m_cm(cm), m_energy(energy), m_weight(halfedge_weight), m_settings(settings), m_visitor(visitor),
+      m_newton(cm, energy, solver, settings.newton), m_topology(cm, energy, halfedge_weight),
+      m_lambda(settings.lambda)
+  {
+    m_timer.start();
+  }
+
+  double lambda() const { return m_lambda; }
+  std::size_t iterations() const { return m_newton.iterations(); }
+  std::size_t topology_operations() const { return m_operations; }
+  bool bound_met() const { return distortion() <= m_settings.distortion_bound; }
+
+  double distortion() const { return total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data()); }
+  double seam_cost() const { return m_cm.seam_length(&m_weight) / m_cm.normalization_radius(); }
+
+  Error_code run()
+  {
+    if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
+    Error_code status = descend();
+    while(status == OK)
+    {
+      const double e_sd = distortion();
+      const double e_se = seam_cost();
+      record(e_sd, e_se);
+      if(!m_settings.fixed_lambda)
+      {
+        const double b = m_settings.distortion_bound;
+        if(e_sd <= b && e_sd >= b - 1e-3) break;
+        // A stationary (E_se, E_SD) seen before: the dual step only cycles
+        // split/merge pairs from here (lambda drifts in its last digits).
+        const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
+        if(!m_seen.insert(key).second) break;
+        // nor does it pay to go on long after the best feasible stopped improving
+        if(m_has_best && m_stationary_points++ > m_best_at + 200) break;
+      }
+      std::vector<Operation> ops;
+      gather_candidates(e_sd, ops);
+      if(!m_settings.fixed_lambda && !dual_update(e_sd, ops)) break;
+      const Operation* best = nullptr;
+      for(const Operation& op : ops)
+        if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
+      if(!best || !(best->weighted(m_lambda) < 0)) break; // stationary in topology too
+      apply(*best);
+      if(m_cancelled) { status = WARNING_CANCELLED; break; }
+      status = descend();
+    }
+    if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS)
+    {
+      record(distortion(), seam_cost());
+      if(!m_settings.fixed_lambda)
+      {
+        if(m_has_best) restore_best();
+        else if(status == OK) status = WARNING_BOUND_NOT_MET;
+      }
+    }
+    return status;
+  }
+
+  Seam_optimization_progress progress() const
+  {
+    Seam_optimization_progress p;
+    p.iterations = m_newton.iterations();
+    p.topology_operations = m_operations;
+    p.distortion = m_newton.energy();
+    p.seam_length_normalized = m_cm.seam_length() / m_cm.normalization_radius();
+    p.lambda = m_lambda;
+    p.seconds = m_timer.time();
+    return p;
+  }
+
+private:
+  // Newton to a stationary point; between iterations, the seams created by
+  // the last split are extended from their tips while that beats Newton.
+  Error_code descend()
+  {
+    for(;;)
+    {
+      if(m_newton.iterations() >= m_settings.max_iterations) return WARNING_MAXIMUM_ITERATIONS;
+      const Newton_status s = m_newton.step();
+      if(s == NEWTON_SOLVER_FAILED) return ERROR_LINEAR_SOLVER;
+      if(!m_visitor.on_iteration(progress())) return WARNING_CANCELLED;
+      const bool propagated = propagate(s == NEWTON_CONVERGED ? 0. : (1 - m_lambda) * m_newton.last_decrease());
+      if(m_cancelled) return WARNING_CANCELLED;
+      if(s == NEWTON_CONVERGED && !propagated) { m_tips.clear(); return OK; }
+    }
+  }
+
+  bool propagate(double newton_gain)
+  {
+    if(m_tips.empty()) return false;
+    bool any = false;
+    std::vector<int> tips;
+    tips.swap(m_tips);
+    for(int tip : tips)
+    {
+      if(m_cancelled) break;
+      std::vector<Operation> ops;
+      m_topology.boundary_splits(tip, ops);
+      const Operation* best = nullptr;
+      for(const Operation& op : ops)
+        if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
+      if(best && best->weighted(m_lambda) < 0 && -best->weighted(m_lambda) > newton_gain)
+      {
+        const int next_tip = best->tips.front();
+        apply(*best);
+        m_tips.push_back(next_tip);
+        any = true;
+      }
+    }
+    return any;
+  }
+
+  void apply(const Operation& op)
+  {
+    Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
+    ++m_operations;
+    if(op.type != CORNER_MERGE)
+      for(int t : op.tips) m_tips.push_back(t);
+    m_newton.rebuild_pattern();
+    if(!m_visitor.on_topology_operation(progress())) m_cancelled = true;
+  }
+
+  // Mean energy density of the faces around each UV vertex, to rank candidates.
+  void rank_vertices(std::vector<std::pair<double, int> >& boundary, std::vector<std::pair<double, int> >& interior)
+  {
+    const std::size_t nuv = m_cm.number_of_uv_vertices();
+    std::vector<double> sum(nuv, 0.), area(nuv, 0.);
+    std::vector<int> corner(nuv, -1);
+    Eigen::Matrix2d J;
+    for(std::size_t f = 0; f < m_cm.number_of_faces(); ++f)
+    {
+      face_jacobian(m_cm, f, m_cm.uv.data(), J);
+      const double e = m_cm.face_area[f] * m_energy.value(J);
+      for(int k = 0; k < 3; ++k)
+      {
+        const int u = m_cm.corner_uv[3*f + k];
+        sum[u] += e; area[u] += m_cm.face_area[f]; corner[u] = int(3*f + k);
+      }
+    }
+    for(std::size_t u = 0; u < nuv; ++u)
+    {
+      if(corner[u] < 0) continue;
+      const std::pair<double, int> item(-sum[u] / area[u], corner[u]);
+      (is_boundary_uv_corner(m_cm, corner[u]) ? boundary : interior).push_back(item);
+    }
+    std::sort(boundary.begin(), boundary.end());
+    std::sort(interior.begin(), interior.end());
+  }
+
+  void gather_candidates(double e_sd, std::vector<Operation>& ops)
+  {
+    std::vector<std::pair<double, int> > boundary, interior;
+    rank_vertices(boundary, interior);
+    const std::size_t nb = (std::min)(boundary.size(),
+                                      (std::max)(std::size_t(20), std::size_t(std::pow(double(boundary.size()), 0.8))));
+    for(std::size_t i = 0; i < nb; ++i) m_topology.boundary_splits(boundary[i].second, ops);
+    m_topology.merges(ops);
+    bool profitable = false;
+    for(const Operation& op : ops) profitable = profitable || op.weighted(m_lambda) < 0;
+    if(boundary.empty() || (!profitable && (m_settings.fixed_lambda || e_sd > m_settings.distortion_bound)))
+    {
+      const std::size_t ni = (std::min)(interior.size(),
+                                        (std::max)(std::size_t(10), std::size_t(std::pow(double(interior.size()), 0.6))));
+      for(std::size_t i = 0; i < ni; ++i) m_topology.interior_splits(interior[i].second, ops);
+    }
+  }
+
+  // rho <- max(0, rho + kappa (E_SD - b)), repeated until a candidate pays
+  // (a split while above the bound, a merge while below); false: nothing can.
+  bool dual_update(double e_sd, const std::vector<Operation>& ops)
+  {
+    const double b = m_settings.distortion_bound;
+    double rho = (1 - m_lambda) / m_lambda;
+    const double step = m_settings.kappa * (e_sd - b);
+    rho = (std::max)(0., rho + step);
+    // rho threshold of each operation: profitable iff (d_sd * rho + d_se) < 0
+    double need = std::numeric_limits<double>::infinity();
+    bool any_now = false;
+    for(const Operation& op : ops)
+    {
+      if(op.d_sd * rho + op.d_se < 0) { any_now = true; break; }
+      if(e_sd > b && op.d_se > 0 && op.d_sd < 0) need = (std::min)(need, op.d_se / -op.d_sd);
+    }
+    if(!any_now && e_sd > b)
+    {
+      if(!std::isfinite(need)) return false;
+      const double m = std::ceil((need - rho) / step);
+      rho += (std::max)(1., m) * step;
+      if(!(rho * 1 > need)) rho = need * (1 + 1e-9);
+    }
+    else if(!any_now && e_sd < b)
+    {
+      double best = -1; // largest rho at which some merge pays
+      for(const Operation& op : ops)
+        if(op.d_se < 0) best = (std::max)(best, op.d_sd <= 0 ? std::numeric_limits<double>::infinity() : -op.d_se / op.d_sd);
+      if(best < 0) return false;
+      if(rho >= best)
+      {
+        const double m = std::ceil((rho - best) / -step);
+        rho = (std::max)(0., rho + (std::max)(1., m) * step);
+        if(rho >= best) rho = best * (1 - 1e-9);
+      }
+    }
+    m_lambda = 1. / (1. + rho);
+    return m_visitor.on_lambda_update(progress());
+  }
+
+  void record(double e_sd, double e_se)
+  {
+    if(m_settings.fixed_lambda || e_sd > m_settings.distortion_bound) return;
+    if(m_has_best && e_se >= m_best_se) return;
+    m_has_best = true;
+    m_best_se = e_se;
+    m_best_at = m_stationary_points;
+    m_best_corner_uv = m_cm.corner_uv;
+    m_best_uv = m_cm.uv;
+    m_best_uv_vertex = m_cm.uv_vertex;
+    m_best_lambda = m_lambda;
+  }
+
+  void restore_best()
+  {
+    m_cm.corner_uv = m_best_corner_uv;
+    m_cm.uv = m_best_uv;
+    m_cm.uv_vertex = m_best_uv_vertex;
+    m_lambda = m_best_lambda;
+  }
+
+  Cut_mesh& m_cm;
+  const Energy& m_energy;
+  const std::vector<double>& m_weight;
+  Alternating_settings m_settings;
+  Visitor& m_visitor;
+  Projected_newton<Energy, SolverTraits> m_newton;
+  Topology_step<Energy> m_topology;
+  double m_lambda;
+  std::size_t m_operations = 0;
+  bool m_cancelled = false;
+  std::vector<int> m_tips;
+  std::set<std::pair<long long, long long> > m_seen;
+  std::size_t m_stationary_points = 0, m_best_at = 0;
+  bool m_has_best = false;
+  double m_best_se = 0, m_best_lambda = 0;
+  std::vector<int> m_best_corner_uv, m_best_uv_vertex;
+  std::vector<double> m_best_uv;
+  CGAL::Real_timer m_timer;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,245 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Candidate topology operations (boundary split, interior split, corner
+// merge), each scored by a local stencil solve, and their application as
+// corner relabellings.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_TOPOLOGY_STEP_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_TOPOLOGY_STEP_H
+
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Local_stencil.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Uv_topology.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+enum Operation_type { BOUNDARY_SPLIT, INTERIOR_SPLIT, CORNER_MERGE };
+
+struct Operation
+{
+  Operation_type type = BOUNDARY_SPLIT;
+  std::vector<int> corners;    // split: corners that get the new UV vertex
+  int uv_a = -1, uv_b = -1;    // split: the UV vertex split; merge: b is merged into a
+  std::vector<int> tips;       // corners at the new seam tips (fracture propagation)
+  double d_sd = 0;             // change of E_SD (local solve)
+  double d_se = 0;             // change of the normalized (weighted) seam length
+  double new_u[4] = { 0, 0, 0, 0 }; // optimized positions: split a, new; merge a
+  double weighted(double lambda) const { return (1 - lambda) * d_sd + lambda * d_se; }
+};
+
+template <typename Energy>
+class Topology_step
+{
+public:
+  Topology_step(const Cut_mesh& cm, const Energy& energy, const std::vector<double>& halfedge_weight)
+    : m_cm(cm), m_energy(energy), m_vc(cm), m_weight(halfedge_weight)
+  {}
+
+  const Vertex_corners& vertex_corners() const { return m_vc; }
+
+  double seam_cost(int h) const { return m_cm.edge_length(h) * m_weight[h] / m_cm.normalization_radius(); }
+
+  // Splits of the UV vertex of `corner` (on a chart boundary) along each
+  // interior edge of its fan whose far end is not on a chart boundary
+  // (so that every chart stays a disk).
+  void boundary_splits(int corner, std::vector<Operation>& out)
+  {
+    if(uv_fan(m_cm, corner, m_fan)) return; // interior vertex
+    const std::vector<int> fan = m_fan;
+    for(std::size_t i = 0; i + 1 < fan.size(); ++i)
+    {
+      const int h = Cut_mesh::next(fan[i]); // from the vertex to w
+      const int w_corner = h;               // corner of w in fan[i]'s face
+      if(is_boundary_uv_corner(m_cm, w_corner)) continue;
+      Operation op;
+      op.type = BOUNDARY_SPLIT;
+      op.uv_a = m_cm.corner_uv[fan[i]];
+      op.corners.assign(fan.begin() + i + 1, fan.end());
+      op.tips.push_back(w_corner);
+      op.d_se = seam_cost(h);
+      if(evaluate_split(op, fan)) out.push_back(op);
+    }
+  }
+
+  // Splits of an interior UV vertex along two of its edges (a slit).
+  void interior_splits(int corner, std::vector<Operation>& out)
+  {
+    if(!uv_fan(m_cm, corner, m_fan)) return;
+    const std::vector<int> fan = m_fan;
+    const std::size_t n = fan.size();
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const int hi = Cut_mesh::next(fan[i]);
+      if(is_boundary_uv_corner(m_cm, hi)) continue;
+      for(std::size_t j = i + 2; j < n && j + 1 < n + i; ++j)
+      {
+        const int hj = Cut_mesh::next(fan[j]);
+        if(is_boundary_uv_corner(m_cm, hj)) continue;
+        Operation op;
+        op.type = INTERIOR_SPLIT;
+        op.uv_a = m_cm.corner_uv[fan[i]];
+        op.corners.assign(fan.begin() + i + 1, fan.begin() + j + 1);
+        op.tips.push_back(hi);
+        op.tips.push_back(hj);
+        op.d_se = seam_cost(hi) + seam_cost(hj);
+        if(evaluate_split(op, fan)) out.push_back(op);
+      }
+    }
+  }
+
+  // Zipping the seam at a tip: h is a seam halfedge whose target is the tip
+  // (both sides share its UV vertex) and whose source sides differ.
+  bool merge_at(int h, Operation& op)
+  {
+    const int o = m_cm.opposite[h];
+    if(o < 0 || !m_cm.is_seam(h)) return false;
+    if(m_cm.corner_uv[h] != m_cm.corner_uv[Cut_mesh::prev(o)]) return false;
+    const int a = m_cm.corner_uv[Cut_mesh::prev(h)], b = m_cm.corner_uv[o];
+    if(a == b) return false;
+    op = Operation();
+    op.type = CORNER_MERGE;
+    op.uv_a = a; op.uv_b = b;
+    op.d_se = -seam_cost(h);
+    op.tips.push_back(Cut_mesh::prev(h));
+    return evaluate_merge(op);
+  }
+
+  void merges(std::vector<Operation>& out)
+  {
+    Operation op;
+    for(std::size_t h = 0; h < m_cm.corner_vertex.size(); ++h)
+      if(merge_at(int(h), op)) out.push_back(op);
+  }
+
+  // Applies `op` to `cm` (which must be the mesh this step reads).
+  static void apply(Cut_mesh& cm, const Vertex_corners& vc, const Operation& op)
+  {
+    if(op.type == CORNER_MERGE)
+    {
+      cm.uv[2*op.uv_a] = op.new_u[0];
+      cm.uv[2*op.uv_a + 1] = op.new_u[1];
+      merge_uv_vertices(cm, vc, op.uv_a, op.uv_b);
+      return;
+    }
+    const int u = split_uv_vertex(cm, op.corners);
+    cm.uv[2*op.uv_a] = op.new_u[0];
+    cm.uv[2*op.uv_a + 1] = op.new_u[1];
+    cm.uv[2*u] = op.new_u[2];
+    cm.uv[2*u + 1] = op.new_u[3];
+  }
+
+private:
+  int local_id(int uv)
+  {
+    for(std::size_t k = 0; k < m_ids.size(); ++k) if(m_ids[k] == uv) return int(k);
+    m_ids.push_back(uv);
+    m_stencil.add_vertex(m_cm.uv[2*uv], m_cm.uv[2*uv + 1]);
+    return int(m_ids.size()) - 1;
+  }
+
+  // Stencil = faces of the fan; free: the old vertex (0) and its copy (1).
+  bool evaluate_split(Operation& op, const std::vector<int>& fan)
+  {
+    m_stencil.clear(); m_ids.clear();
+    m_ids.push_back(op.uv_a); m_ids.push_back(-2);
+    m_stencil.add_vertex(m_cm.uv[2*op.uv_a], m_cm.uv[2*op.uv_a + 1]);
+    m_stencil.add_vertex(m_cm.uv[2*op.uv_a], m_cm.uv[2*op.uv_a + 1]);
+    m_stencil.n_free = 2;
+    for(int c : fan)
+    {
+      const bool moved = std::find(op.corners.begin(), op.corners.end(), c) != op.corners.end();
+      const int f = c / 3;
+      m_stencil.faces.push_back(f);
+      for(int k = 0; k < 3; ++k)
+      {
+        const int ck = 3*f + k;
+        m_stencil.local.push_back(ck == c ? (moved ? 1 : 0) : local_id(m_cm.corner_uv[ck]));
+      }
+    }
+    const double before = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
+    const double after = optimize_stencil(m_cm, m_energy, m_stencil, 12);
+    if(!(after < std::numeric_limits<double>::infinity())) return false;
+    op.d_sd = after - before;
+    std::copy(m_stencil.pos.begin(), m_stencil.pos.begin() + 4, op.new_u);
+    return true;
+  }
+
+  // Stencil = faces of both fans; free: the merged vertex, started at the
+  // midpoint (or nearer either copy) where that flips nothing.
+  bool evaluate_merge(Operation& op)
+  {
+    const int v = m_cm.uv_vertex[op.uv_a];
+    m_stencil.clear(); m_ids.clear();
+    m_ids.push_back(op.uv_a);
+    m_stencil.add_vertex(0, 0);
+    m_stencil.n_free = 1;
+    // "before" energy with the two copies at their own positions
+    Local_stencil before_stencil;
+    std::vector<int> before_ids;
+    for(int k = m_vc.offset[v]; k < m_vc.offset[v + 1]; ++k)
+    {
+      const int c = m_vc.corners[k];
+      const int uvc = m_cm.corner_uv[c];
+      if(uvc != op.uv_a && uvc != op.uv_b) continue;
+      const int f = c / 3;
+      m_stencil.faces.push_back(f);
+      for(int j = 0; j < 3; ++j)
+      {
+        const int cj = 3*f + j;
+        const int uj = m_cm.corner_uv[cj];
+        m_stencil.local.push_back(cj == c ? 0 : local_id(uj));
+      }
+    }
+    const double* pa = &m_cm.uv[2*op.uv_a];
+    const double* pb = &m_cm.uv[2*op.uv_b];
+    double before = 0;
+    {
+      // energy of the same faces with the copies where they are
+      std::vector<double> pos = m_stencil.pos;
+      Local_stencil s = m_stencil;
+      s.pos.push_back(pb[0]); s.pos.push_back(pb[1]);
+      const int lb = int(s.pos.size() / 2) - 1;
+      s.pos[0] = pa[0]; s.pos[1] = pa[1];
+      for(std::size_t i = 0; i < s.faces.size(); ++i)
+        for(int j = 0; j < 3; ++j)
+          if(s.local[3*i + j] == 0 && m_cm.corner_uv[3*s.faces[i] + j] == op.uv_b) s.local[3*i + j] = lb;
+      before = stencil_energy(m_cm, m_energy, s, s.pos.data());
+      (void)pos;
+    }
+    static const double ts[] = { 0.5, 0.25, 0.75, 0., 1. };
+    double start = std::numeric_limits<double>::infinity();
+    for(double t : ts)
+    {
+      m_stencil.pos[0] = (1 - t) * pa[0] + t * pb[0];
+      m_stencil.pos[1] = (1 - t) * pa[1] + t * pb[1];
+      start = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
+      if(start < std::numeric_limits<double>::infinity()) break;
+    }
+    if(!(start < std::numeric_limits<double>::infinity())) return false;
+    const double after = optimize_stencil(m_cm, m_energy, m_stencil, 12);
+    op.d_sd = after - before;
+    op.new_u[0] = m_stencil.pos[0]; op.new_u[1] = m_stencil.pos[1];
+    return true;
+  }
+
+  const Cut_mesh& m_cm;
+  const Energy& m_energy;
+  Vertex_corners m_vc;
+  const std::vector<double>& m_weight;
+  Local_stencil m_stencil;
+  std::vector<int> m_ids, m_fan;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

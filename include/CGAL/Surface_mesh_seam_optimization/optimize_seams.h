@@ -1,0 +1,163 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZE_SEAMS_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZE_SEAMS_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Alternating_optimization.h>
+
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Jointly optimizes the seams and the UV map of `tm` (OptCuts): the shortest
+/// seams it finds whose map meets the distortion bound, or, with
+/// `seam_weight`, a stationary point of E_w = (1 - lambda) E_SD + lambda E_se.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam UVMap a read-write property map `halfedge_descriptor -> Point_2`
+///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
+///
+/// \param tm a topological disk or closed genus-0 surface, or several of them
+///   (or, with `edge_is_seam_map` / `use_uv_map_as_initial`, a mesh already cut into disks)
+/// \param uvmap receives the UV map
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{bound on E_SD; the result meets it with the shortest seams found}
+///     \cgalParamDefault{`4.1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{seam_weight}
+///     \cgalParamDescription{a fixed lambda in [0, 1): no bound, no dual step}
+///     \cgalParamDefault{none (bound mode)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bijective}
+///     \cgalParamDescription{prevent overlaps with a scaffold (not implemented yet: the value is accepted and ignored)}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{read-write `edge_descriptor -> bool`: initial seams, and the result}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_seam_weight_map}
+///     \cgalParamDescription{`edge_descriptor -> double` multiplying each edge's seam cost
+///       (> 1 repels seams, < 1 attracts them)}
+///     \cgalParamDefault{all 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_uv_map_as_initial}
+///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{a model of `DistortionEnergy` for the descent steps (the bound is always on E_SD)}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{a model of `SparseSolverTraits`}
+///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{a model of `SeamOptimizationVisitor` (pass `std::ref(v)` to keep its state)}
+///     \cgalParamDefault{`Default_seam_optimization_visitor`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_number_of_iterations}
+///     \cgalParamDescription{cap on Newton iterations}
+///     \cgalParamDefault{`100000`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::get_parameter_reference;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Optimization_result result;
+  auto fail = [&](Error_code code, const char* message) {
+    result.status = code;
+    result.message = message;
+    return result;
+  };
+
+  internal::Alternating_settings settings;
+  settings.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1);
+  if(!(settings.distortion_bound > 4.) || !std::isfinite(settings.distortion_bound))
+    return fail(ERROR_WRONG_PARAMETER, "distortion_bound must be a finite number > 4");
+  constexpr bool fixed = !parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
+  if constexpr(fixed)
+  {
+    settings.fixed_lambda = true;
+    settings.lambda = choose_parameter(get_parameter(np, internal_np::seam_weight), 0.);
+    if(!(settings.lambda >= 0. && settings.lambda < 1.))
+      return fail(ERROR_WRONG_PARAMETER, "seam_weight must be in [0, 1)");
+  }
+  settings.max_iterations =
+    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
+
+  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+  auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
+                                 Eigen_simplicial_ldlt_traits());
+  Default_seam_optimization_visitor default_visitor;
+  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  internal::Cut_mesh cm;
+  internal::Face_graph_copy<TriangleMesh> copy;
+  result.status = internal::initialize_cut_mesh(tm, uvmap, np, cm, copy, result.message);
+  if(result.status != OK) return result;
+
+  std::vector<double> weight(cm.corner_vertex.size(), 1.);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
+  {
+    auto wmap = get_parameter(np, internal_np::edge_seam_weight_map);
+    for(std::size_t h = 0; h < weight.size(); ++h)
+    {
+      weight[h] = double(get(wmap, edge(copy.corner_halfedge[h], tm)));
+      if(!(weight[h] >= 0) || !std::isfinite(weight[h]))
+        return fail(ERROR_WRONG_PARAMETER, "edge_seam_weight_map has a negative or non-finite weight");
+    }
+  }
+
+  internal::rescale_to_optimal(cm, energy);
+  result.initial_distortion = internal::total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
+
+  typedef std::remove_cv_t<decltype(energy)> Energy;
+  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  internal::Alternating_optimization<Energy, decltype(solver), Visitor> optimizer(cm, energy, solver, weight,
+                                                                                  settings, visitor);
+  result.status = optimizer.run();
+  if(!has_result(result.status))
+  {
+    result.message = "the optimization failed";
+    return result;
+  }
+
+  internal::write_uv_map(cm, copy, uvmap);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+    internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
+  internal::measure_result(cm, result);
+  result.lambda = optimizer.lambda();
+  result.iterations = optimizer.iterations();
+  result.topology_operations = optimizer.topology_operations();
+  result.bound_met = result.distortion <= settings.distortion_bound;
+  result.seconds = timer.time();
+  return result;
+}
+
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,167 @@
+// optimize_seams (OptCuts) on small shared meshes: bound met, no flip, one
+// chart, seams = UV discontinuities, deterministic, monotone in the bound.
+#define BOOST_TEST_MODULE optimize_seams
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef K::Point_2 Point_2;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef Surface_mesh::Halfedge_index halfedge_descriptor;
+typedef Surface_mesh::Edge_index edge_descriptor;
+typedef Surface_mesh::Property_map<halfedge_descriptor, Point_2> UV_map;
+typedef Surface_mesh::Property_map<edge_descriptor, bool> Seam_map;
+
+namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+namespace SMSO_np = CGAL::Surface_mesh_seam_optimization::parameters;
+
+namespace {
+
+struct Run
+{
+  Surface_mesh sm;
+  UV_map uv;
+  Seam_map seam;
+  SMSO::Optimization_result result;
+};
+
+template <typename NP>
+void run(const std::string& name, Run& r, const NP& np)
+{
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/" + name, r.sm));
+  r.uv = r.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  r.seam = r.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  r.result = SMSO::optimize_seams(r.sm, r.uv, SMSO_np::combine(SMSO_np::edge_is_seam_map(r.seam), np));
+  BOOST_TEST_MESSAGE(name << ": status " << SMSO::get_error_message(r.result.status) << ", E_SD "
+                     << r.result.distortion << ", E_se " << r.result.seam_length_normalized << ", lambda "
+                     << r.result.lambda << ", " << r.result.iterations << " iterations, "
+                     << r.result.topology_operations << " operations, " << r.result.seconds << " s");
+}
+
+// The written maps are a valid cut: seam map == UV discontinuities, no flip,
+// one chart, and the reported figures are those of the written map.
+void check_valid(const Run& r)
+{
+  BOOST_TEST(r.result.has_result());
+  const SMSO::Uv_map_measures implied = SMSO::measure_uv_map(r.sm, r.uv);
+  const SMSO::Uv_map_measures declared = SMSO::measure_uv_map(r.sm, r.uv, SMSO_np::edge_is_seam_map(r.seam));
+  BOOST_TEST(implied.status == SMSO::OK);
+  BOOST_TEST(implied.flipped_triangles == 0u);
+  BOOST_TEST(implied.charts == 1u);
+  BOOST_TEST(declared.charts == 1u);
+  BOOST_TEST(std::abs(implied.seam_length - declared.seam_length) <= 1e-12 * (1 + declared.seam_length));
+  BOOST_TEST(std::abs(implied.distortion - r.result.distortion) <= 1e-9 * r.result.distortion);
+  BOOST_TEST(std::abs(implied.seam_length_normalized - r.result.seam_length_normalized) <= 1e-9);
+  // every seam edge really separates UV corners
+  std::size_t seam_edges = 0;
+  for(edge_descriptor e : r.sm.edges())
+  {
+    if(!r.seam[e]) continue;
+    ++seam_edges;
+    const halfedge_descriptor h = r.sm.halfedge(e), o = r.sm.opposite(h);
+    BOOST_REQUIRE(!r.sm.is_border(h) && !r.sm.is_border(o));
+    const bool differ = r.uv[h] != r.uv[r.sm.prev(o)] || r.uv[r.sm.prev(h)] != r.uv[o];
+    BOOST_REQUIRE(differ);
+  }
+  BOOST_TEST(seam_edges > 0u);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(the_bound_is_met_on_small_meshes)
+{
+  for(const std::string name : { "cat_f1500.obj", "bishop_part_f1000.obj", "pyramid_f3000.obj", "sphere_f1522.obj" })
+  {
+    Run r;
+    run(name, r, SMSO_np::distortion_bound(4.1));
+    BOOST_TEST(r.result.status == SMSO::OK);
+    BOOST_TEST(r.result.bound_met);
+    BOOST_TEST(r.result.distortion <= 4.1);
+    BOOST_TEST(r.result.distortion < r.result.initial_distortion);
+    BOOST_TEST(r.result.topology_operations > 0u);
+    check_valid(r);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(results_are_deterministic)
+{
+  Run a, b;
+  run("sphere_f1522.obj", a, SMSO_np::distortion_bound(4.1));
+  run("sphere_f1522.obj", b, SMSO_np::distortion_bound(4.1));
+  BOOST_TEST(a.result.distortion == b.result.distortion);
+  BOOST_TEST(a.result.seam_length == b.result.seam_length);
+  BOOST_TEST(a.result.iterations == b.result.iterations);
+  bool same = true;
+  for(halfedge_descriptor h : a.sm.halfedges())
+    if(!a.sm.is_border(h)) same = same && a.uv[h] == b.uv[h];
+  BOOST_TEST(same);
+}
+
+BOOST_AUTO_TEST_CASE(a_lower_bound_gives_longer_seams)
+{
+  Run loose, tight;
+  run("cat_f1500.obj", loose, SMSO_np::distortion_bound(4.4));
+  run("cat_f1500.obj", tight, SMSO_np::distortion_bound(4.05));
+  BOOST_TEST(loose.result.distortion <= 4.4);
+  BOOST_TEST(tight.result.distortion <= 4.05);
+  BOOST_TEST(tight.result.seam_length > loose.result.seam_length);
+  check_valid(tight);
+}
+
+BOOST_AUTO_TEST_CASE(fixed_lambda_stops_at_a_stationary_point)
+{
+  Run r;
+  run("bishop_part_f1000.obj", r, SMSO_np::seam_weight(0.025));
+  BOOST_TEST(r.result.status == SMSO::OK);
+  BOOST_TEST(r.result.lambda == 0.025);
+  check_valid(r);
+  // Restarting from the result with the same lambda: no operation pays and
+  // Newton is already converged.
+  SMSO::Optimization_result again = SMSO::optimize_seams(
+    r.sm, r.uv, SMSO_np::combine(SMSO_np::seam_weight(0.025), SMSO_np::use_uv_map_as_initial(true),
+                                 SMSO_np::edge_is_seam_map(r.seam)));
+  BOOST_TEST(again.status == SMSO::OK);
+  BOOST_TEST(again.topology_operations == 0u);
+  BOOST_TEST(again.iterations <= 3u);
+  BOOST_TEST(std::abs(again.seam_length - r.result.seam_length) <= 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(bad_parameters_are_refused_and_nothing_is_written)
+{
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", sm));
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(-1, -1)).first;
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::distortion_bound(3.9)).status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::seam_weight(1.0)).status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::seam_weight(-0.1)).status == SMSO::ERROR_WRONG_PARAMETER);
+  bool untouched = true;
+  for(halfedge_descriptor h : sm.halfedges()) untouched = untouched && uv[h] == Point_2(-1, -1);
+  BOOST_TEST(untouched);
+}
+
+BOOST_AUTO_TEST_CASE(the_visitor_sees_progress_and_can_cancel)
+{
+  struct Counting_visitor
+  {
+    std::size_t iterations = 0, operations = 0, updates = 0;
+    bool on_iteration(const SMSO::Seam_optimization_progress& p) { ++iterations; return p.topology_operations < 5; }
+    bool on_topology_operation(const SMSO::Seam_optimization_progress&) { ++operations; return true; }
+    bool on_lambda_update(const SMSO::Seam_optimization_progress&) { ++updates; return true; }
+  } visitor;
+  Run r;
+  run("cat_f1500.obj", r, CGAL::parameters::visitor(std::ref(visitor)));
+  BOOST_TEST(r.result.status == SMSO::WARNING_CANCELLED);
+  BOOST_TEST(visitor.iterations > 0u);
+  BOOST_TEST(visitor.updates > 0u);
+  BOOST_TEST(visitor.operations >= 5u);
+  BOOST_TEST(r.result.iterations == visitor.iterations);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(r.sm, r.uv) == 0u);
+}
