@@ -77,10 +77,17 @@ public:
         const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
         if(!m_seen.insert(key).second) break;
         // nor does it pay to go on long after the best feasible stopped improving
-        if(m_has_best && m_stationary_points++ > m_best_at + 200) break;
+        if(m_has_best && m_stationary_points++ > m_best_at + 50) break;
       }
       std::vector<Operation> ops;
       gather_candidates(e_sd, ops);
+      if(!m_settings.fixed_lambda)
+      {
+        // above the bound only cuts, below only merges (the dual step makes them pay)
+        const bool above = e_sd > m_settings.distortion_bound;
+        ops.erase(std::remove_if(ops.begin(), ops.end(), [above](const Operation& op) {
+                    return above == (op.type == CORNER_MERGE); }), ops.end());
+      }
       if(!m_settings.fixed_lambda && !dual_update(e_sd, ops)) break;
       const Operation* best = nullptr;
       for(const Operation& op : ops)
