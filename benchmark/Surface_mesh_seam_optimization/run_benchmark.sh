@@ -1,0 +1,207 @@
+#!/usr/bin/env bash
+# Runs seam_benchmark (optimize_seams at bound 4.1) on the shared benchmark
+# meshes, one process per mesh (so that peak memory is per mesh), checks each
+# output with the independent evaluator uvmetrics.py, and writes a CSV and a
+# Markdown table with the paper's code's figures (reference_optcuts.csv) beside
+# ours.
+#
+# Usage: run_benchmark.sh [--quick] [--timeout S] [--bound B] [--out PREFIX]
+#                         [--data-dir DIR] [--build-dir DIR] [--jobs N] [mesh ...]
+#   --quick        cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000
+#   (default)      every mesh of reference_optcuts.csv
+#   mesh ...       explicit mesh names (in DATA/benchmark) or .obj paths; mode "custom"
+#   --timeout S    per-mesh time limit in seconds (default 600)
+#   --bound B      distortion bound (default 4.1; the reference figures are at 4.1)
+#   --out PREFIX   write PREFIX.csv and PREFIX.md (default benchmark/results_<mode>)
+#   --data-dir DIR shared data (default: <repo>/../shared/data, or $SMSO_SHARED_DATA)
+#   --build-dir D  build directory (default <repo>/build-bench)
+#   --jobs N       build parallelism (default 2)
+# Results are not asserted: the exit code is non-zero only if the build fails or
+# the program crashes (killed by a signal or an unexpected exit code). A mesh
+# that times out or is rejected gets a row with its status.
+set -u
+
+script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo=$(cd "$script_dir/../.." && pwd)
+
+mode=full
+timeout_s=600
+bound=4.1
+out_prefix=
+data_dir=${SMSO_SHARED_DATA:-$repo/../shared/data}
+build_dir=$repo/build-bench
+jobs=2
+meshes=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --quick) mode=quick ;;
+    --timeout) timeout_s=$2; shift ;;
+    --bound) bound=$2; shift ;;
+    --out) out_prefix=$2; shift ;;
+    --data-dir) data_dir=$2; shift ;;
+    --build-dir) build_dir=$2; shift ;;
+    --jobs) jobs=$2; shift ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "unknown option $1" >&2; exit 2 ;;
+    *) meshes+=("$1"); mode=custom ;;
+  esac
+  shift
+done
+
+if [ ! -d "$data_dir" ]; then echo "shared data not found: $data_dir (use --data-dir)" >&2; exit 2; fi
+data_dir=$(cd "$data_dir" && pwd)
+reference=$data_dir/reference_optcuts.csv
+uvmetrics=$data_dir/../tools/uvmetrics.py
+[ -f "$uvmetrics" ] || uvmetrics=$repo/../shared/tools/uvmetrics.py
+[ -n "$out_prefix" ] || out_prefix=$repo/benchmark/results_$mode
+
+# --- build (configure once; make is a no-op when up to date)
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release || { echo "configure failed" >&2; exit 1; }
+fi
+cmake --build "$build_dir" --target seam_benchmark -j "$jobs" || { echo "build failed" >&2; exit 1; }
+bin=$build_dir/benchmark/Surface_mesh_seam_optimization/seam_benchmark
+[ -x "$bin" ] || { echo "no binary $bin" >&2; exit 1; }
+
+# --- mesh list
+if [ "$mode" = quick ]; then
+  meshes=(cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000)
+elif [ "$mode" = full ]; then
+  [ -f "$reference" ] || { echo "no $reference" >&2; exit 2; }
+  mapfile -t meshes < <(grep -v '^#' "$reference" | tail -n +2 | cut -d, -f1 | awk 'NF && !seen[$0]++')
+fi
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/smso_bench.XXXXXX")
+out_dir=$work/out
+mkdir -p "$out_dir"
+raw=$work/raw.csv
+: > "$raw"
+crashed=0
+start_date=$(date -u '+%Y-%m-%d %H:%M UTC')
+load_before=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+echo "mode $mode: ${#meshes[@]} meshes, bound $bound, timeout ${timeout_s}s, outputs in $out_dir" >&2
+
+for m in "${meshes[@]}"; do
+  case "$m" in
+    */*|*.obj|*.off) file=$m ;;
+    *) file=$data_dir/benchmark/$m.obj ;;
+  esac
+  name=$(basename "$file"); name=${name%.*}
+  t0=$(date +%s.%N)
+  line=$(timeout --kill-after=10 "$timeout_s" "$bin" --no-header --bound "$bound" --out-dir "$out_dir" "$file" 2>"$work/$name.err")
+  rc=$?
+  t1=$(date +%s.%N)
+  if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
+    line="$name,,$timeout_s,,,,,,,,TIMEOUT,,"
+  elif [ $rc -ne 0 ] || [ -z "$line" ]; then
+    line="$name,,,,,,,,,,CRASH_rc$rc,,"
+    crashed=1
+  fi
+  # uvmetrics on the output (independent figures)
+  if [ -f "$out_dir/$name.obj" ]; then
+    timeout "$timeout_s" python3 "$uvmetrics" "$out_dir/$name.obj" --json > "$work/$name.uvm.json" 2>"$work/$name.uvm.err" || true
+  fi
+  echo "$line" >> "$raw"
+  printf '%-24s %6.1fs  %s\n' "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$line" >&2
+done
+
+commit=$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)
+dirty=$(git -C "$repo" status --porcelain -- include benchmark/Surface_mesh_seam_optimization/seam_benchmark.cpp 2>/dev/null | wc -l)
+cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
+
+python3 - "$raw" "$work" "$reference" "$out_prefix" "$mode" "$bound" "$commit" "$dirty" "$(nproc)" "$cpu" \
+  "$start_date" "$load_before" "$timeout_s" <<'EOF'
+import csv, json, os, statistics, sys
+raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load, timeout_s = sys.argv[1:]
+fields = ["mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
+          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda"]
+rows = [dict(zip(fields, l)) for l in csv.reader(open(raw)) if l]
+
+ref = {}  # mesh -> {bijective flag -> row}
+if os.path.exists(reference):
+    lines = [l for l in open(reference) if not l.startswith("#")]
+    for r in csv.DictReader(lines):
+        ref.setdefault(r["mesh"], {})[r["bijective"]] = r
+
+def num(x):
+    try: return float(x)
+    except (TypeError, ValueError): return None
+
+def fmt(x, d=2):
+    return "-" if x is None else f"{x:.{d}f}"
+
+out = []
+for r in rows:
+    u = {}
+    p = os.path.join(work, r["mesh"] + ".uvm.json")
+    if os.path.exists(p):
+        try: u = json.load(open(p))
+        except ValueError: u = {}
+    rr = ref.get(r["mesh"], {})
+    rb = rr.get("0") or rr.get("1")
+    o = dict(r)
+    o["uvm_e_sd"] = u.get("e_sd")
+    o["uvm_seam_length_normalized"] = u.get("seam_length_normalized")
+    o["uvm_charts"] = u.get("charts")
+    o["uvm_flips"] = u.get("flipped")
+    o["uvm_overlap_pairs"] = u.get("overlap_pairs")
+    o["uvm_valid"] = u.get("valid")
+    o["ref_bijective"] = rb["bijective"] if rb else None
+    for k in ("e_sd", "seam_norm", "wall_s", "newton_iterations", "peak_mb"):
+        o["ref_" + k] = num(rb[k]) if rb else None
+    se = num(o["uvm_seam_length_normalized"]) if o["uvm_seam_length_normalized"] is not None else num(r["seam_length_normalized"])
+    o["seam_ratio"] = se / o["ref_seam_norm"] if se is not None and o["ref_seam_norm"] else None
+    s = num(r["seconds"])
+    o["speedup"] = o["ref_wall_s"] / s if s and o["ref_wall_s"] and r["status"] != "TIMEOUT" else None
+    out.append(o)
+
+cols = list(out[0].keys()) if out else fields
+with open(prefix + ".csv", "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=cols)
+    w.writeheader()
+    for o in out:
+        w.writerow({k: ("" if v is None else v) for k, v in o.items()})
+
+ok = [o for o in out if num(o["seconds"]) is not None and o["status"] not in ("TIMEOUT",) and not o["status"].startswith(("ERROR", "CRASH"))]
+ours_med = statistics.median([num(o["seconds"]) for o in ok]) if ok else None
+both = [o for o in ok if o["ref_wall_s"]]
+ref_med = statistics.median([o["ref_wall_s"] for o in both]) if both else None
+ours_med_both = statistics.median([num(o["seconds"]) for o in both]) if both else None
+
+L = []
+L.append(f"# optimize_seams benchmark ({mode})\n")
+L.append(f"- date: {date}; git commit: {commit}" + (f" (working tree had {dirty} uncommitted change(s) in include/ or the benchmark source)" if dirty != "0" else "") + "")
+L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start: {load}")
+L.append(f"- settings: distortion bound {bound}, no bijectivity (no scaffold yet), one process per mesh, time limit {timeout_s} s per mesh")
+L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv); the non-bijective row where there is one (ref bij = 0), else the bijective one (ref bij = 1)")
+L.append(f"- s: wall seconds of the optimize_seams() call; E_SD, E_se (normalized seam length), flips and overlapping pairs by uvmetrics.py on the written OBJ; E_SD lib / E_se lib: the library's own figures; MB: peak resident memory (ru_maxrss) of the process")
+L.append(f"- ratios: E_se / ref E_se (< 1: shorter seams), ref s / s (> 1: faster)")
+if ours_med is not None:
+    line = f"- median wall time: {ours_med:.2f} s over {len(ok)} meshes"
+    if ref_med is not None:
+        line += f"; on the {len(both)} meshes with a reference: ours {ours_med_both:.2f} s, reference {ref_med:.2f} s (ratio {ref_med / ours_med_both:.2f}x)"
+    L.append(line)
+L.append("")
+hdr = ["mesh", "faces", "s", "ref s", "ref s / s", "Newton it", "ref it", "topo ops", "E_SD", "E_SD lib", "ref E_SD",
+       "E_se", "E_se lib", "ref E_se", "ref bij", "E_se / ref", "charts", "flips", "overlaps", "MB", "ref MB", "status"]
+L.append("| " + " | ".join(hdr) + " |")
+L.append("|" + "---|" * len(hdr))
+for o in out:
+    cells = [o["mesh"], o["faces"] or "-", fmt(num(o["seconds"])), fmt(o["ref_wall_s"]), fmt(o["speedup"]),
+             o["iterations"] or "-", fmt(o["ref_newton_iterations"], 0), o["topology_operations"] or "-",
+             fmt(num(o["uvm_e_sd"]), 4), fmt(num(o["e_sd"]), 4), fmt(o["ref_e_sd"], 4),
+             fmt(num(o["uvm_seam_length_normalized"]), 3), fmt(num(o["seam_length_normalized"]), 3),
+             fmt(o["ref_seam_norm"], 3), o["ref_bijective"] or "-", fmt(o["seam_ratio"]),
+             str(o["uvm_charts"]) if o["uvm_charts"] is not None else (o["charts"] or "-"),
+             str(o["uvm_flips"]) if o["uvm_flips"] is not None else (o["flipped_triangles"] or "-"),
+             str(o["uvm_overlap_pairs"]) if o["uvm_overlap_pairs"] is not None else "-",
+             fmt(num(o["peak_mb"]), 0), fmt(o["ref_peak_mb"], 0), o["status"]]
+    L.append("| " + " | ".join(str(c) for c in cells) + " |")
+open(prefix + ".md", "w").write("\n".join(L) + "\n")
+print("\n".join(L))
+print(f"\nwrote {prefix}.csv and {prefix}.md", file=sys.stderr)
+EOF
+py=$?
+[ $py -eq 0 ] || { echo "report generation failed" >&2; exit 1; }
+echo "per-mesh outputs: $out_dir" >&2
+exit $crashed

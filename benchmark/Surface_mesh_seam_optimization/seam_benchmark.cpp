@@ -1,0 +1,194 @@
+// Runs optimize_seams() (OptCuts: seams + UV map under a distortion bound) on
+// each mesh given, writes DIR/<name>.obj with the UVs, and prints one CSV line
+// per mesh:
+//   mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,
+//   charts,flipped_triangles,peak_mb,status,bound_met,lambda
+// seconds: wall time of the optimize_seams() call (reading and writing excluded).
+// peak_mb: getrusage(RUSAGE_SELF).ru_maxrss of the whole process so far, so run
+// one mesh per process to get a per-mesh figure (run_benchmark.sh does).
+// A mesh that cannot be read or that optimize_seams() rejects (not a disk,
+// not manifold, ...) gives a line with its status, not a failure; the exit
+// code is non-zero only for a wrong command line.
+//
+// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--no-header] mesh.obj ...
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
+#include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+namespace SMSO_np = CGAL::Surface_mesh_seam_optimization::parameters;
+
+static const char* status_name(SMSO::Error_code c)
+{
+  switch(c)
+  {
+    case SMSO::OK: return "OK";
+    case SMSO::WARNING_MAXIMUM_ITERATIONS: return "WARNING_MAXIMUM_ITERATIONS";
+    case SMSO::WARNING_CANCELLED: return "WARNING_CANCELLED";
+    case SMSO::WARNING_BOUND_NOT_MET: return "WARNING_BOUND_NOT_MET";
+    case SMSO::ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
+    case SMSO::ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
+    case SMSO::ERROR_NON_MANIFOLD_MESH: return "ERROR_NON_MANIFOLD_MESH";
+    case SMSO::ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
+    case SMSO::ERROR_DEGENERATE_TRIANGLE: return "ERROR_DEGENERATE_TRIANGLE";
+    case SMSO::ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
+    case SMSO::ERROR_INVALID_UV_MAP: return "ERROR_INVALID_UV_MAP";
+    case SMSO::ERROR_FLIPPED_UV_TRIANGLE: return "ERROR_FLIPPED_UV_TRIANGLE";
+    case SMSO::ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
+    case SMSO::ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
+    case SMSO::ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+  }
+  return "ERROR_UNKNOWN";
+}
+
+static double peak_mb()
+{
+  struct rusage ru;
+  if(getrusage(RUSAGE_SELF, &ru) != 0) return -1;
+  return double(ru.ru_maxrss) / 1024.; // kilobytes on Linux
+}
+
+struct Row
+{
+  std::string name;
+  std::size_t faces = 0;
+  double seconds = 0;
+  std::size_t iterations = 0, topology_operations = 0, charts = 0, flips = 0;
+  double e_sd = 0, seam = 0, lambda = 0;
+  bool bound_met = false;
+  std::string status = "ERROR_UNKNOWN";
+};
+
+static void print(const Row& r)
+{
+  std::printf("%s,%zu,%.3f,%zu,%zu,%.6f,%.6f,%zu,%zu,%.1f,%s,%d,%.6g\n", r.name.c_str(), r.faces, r.seconds,
+              r.iterations, r.topology_operations, r.e_sd, r.seam, r.charts, r.flips, peak_mb(), r.status.c_str(),
+              int(r.bound_met), r.lambda);
+  std::fflush(stdout);
+}
+
+static Row run(const std::string& file, double bound, std::size_t max_iterations, const std::string& out_dir)
+{
+  Row row;
+  row.name = std::filesystem::path(file).stem().string();
+  Surface_mesh sm;
+  if(!CGAL::IO::read_polygon_mesh(file, sm) || is_empty(sm))
+  {
+    row.status = "ERROR_READ";
+    return row;
+  }
+  row.faces = sm.number_of_faces();
+  auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, K::Point_2>("h:uv").first;
+  auto seams = sm.add_property_map<Surface_mesh::Edge_index, bool>("e:seam", false).first;
+
+  const auto start = std::chrono::steady_clock::now();
+  const SMSO::Optimization_result r =
+    SMSO::optimize_seams(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(bound),
+                                                  SMSO_np::maximum_number_of_iterations(max_iterations),
+                                                  SMSO_np::edge_is_seam_map(seams)));
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  row.status = status_name(r.status);
+  if(!r.has_result())
+  {
+    if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";
+    return row;
+  }
+  row.iterations = r.iterations;
+  row.topology_operations = r.topology_operations;
+  row.e_sd = r.distortion;
+  row.seam = r.seam_length_normalized;
+  row.charts = r.charts;
+  row.lambda = r.lambda;
+  row.bound_met = r.bound_met;
+  const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
+  row.flips = m.flipped_triangles;
+  if(!out_dir.empty())
+  {
+    const std::string out = (std::filesystem::path(out_dir) / (row.name + ".obj")).string();
+    if(!SMSO::IO::write_OBJ_with_uv_map(out, sm, uv))
+    {
+      std::cerr << row.name << ": cannot write " << out << "\n";
+      row.status = "ERROR_WRITE";
+    }
+  }
+  return row;
+}
+
+static int usage(const char* argv0)
+{
+  std::cerr << "usage: " << argv0
+            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--no-header] mesh.obj ...\n"
+               "  --bound B           distortion bound on E_SD (default 4.1)\n"
+               "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
+               "  --max-iterations N  cap on Newton iterations (default: the library's)\n"
+               "  --no-header         do not print the CSV header line\n";
+  return EXIT_FAILURE;
+}
+
+int main(int argc, char** argv)
+{
+  double bound = 4.1;
+  std::size_t max_iterations = 100000;
+  std::string out_dir = ".";
+  bool header = true;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--bound" && i + 1 < argc) bound = std::atof(argv[++i]);
+    else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
+    else if(a == "--max-iterations" && i + 1 < argc) max_iterations = std::strtoull(argv[++i], nullptr, 10);
+    else if(a == "--no-header") header = false;
+    else if(a == "-h" || a == "--help") { usage(argv[0]); return EXIT_SUCCESS; }
+    else if(!a.empty() && a[0] == '-') return usage(argv[0]);
+    else files.push_back(a);
+  }
+  if(files.empty()) return usage(argv[0]);
+  if(!out_dir.empty())
+  {
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+  }
+
+  if(header)
+    std::printf("mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,charts,"
+                "flipped_triangles,peak_mb,status,bound_met,lambda\n");
+  for(const std::string& file : files)
+  {
+    Row row;
+    try
+    {
+      row = run(file, bound, max_iterations, out_dir);
+    }
+    catch(const std::bad_alloc&)
+    {
+      row.name = std::filesystem::path(file).stem().string();
+      row.status = "ERROR_OUT_OF_MEMORY";
+    }
+    catch(const std::exception& e)
+    {
+      row.name = std::filesystem::path(file).stem().string();
+      row.status = "ERROR_EXCEPTION";
+      std::cerr << row.name << ": " << e.what() << "\n";
+    }
+    print(row);
+  }
+  return EXIT_SUCCESS;
+}
