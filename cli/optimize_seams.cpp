@@ -18,10 +18,13 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -31,6 +34,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -38,6 +42,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>   // isatty
 
 namespace {
 
@@ -56,8 +62,29 @@ const char* const program_name = "optimize_seams";
 
 enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
 
-// Always passed to the library, so --help can state the cap in force.
-const std::size_t default_max_iterations = 10000;   // the library's default too
+// Always passed to the library, so --help can state the cap in force; the
+// same values as the library's own defaults for each mode.
+const std::size_t default_max_iterations_seams = 100000;   // optimize_seams()
+const std::size_t default_max_iterations_keep = 10000;     // minimize_distortion()
+const double default_distortion_bound = 4.1;
+
+// What the run does: the bound mode (OptCuts, the default), a fixed seam
+// weight (no dual step), or the distortion-only mode with the seams kept.
+enum class Mode { DISTORTION_BOUND, SEAM_WEIGHT, KEEP_SEAMS };
+
+const char* mode_name(Mode m)
+{
+  switch(m)
+  {
+    case Mode::DISTORTION_BOUND: return "distortion-bound";
+    case Mode::SEAM_WEIGHT: return "seam-weight";
+    case Mode::KEEP_SEAMS: return "keep-seams";
+  }
+  return "unknown";
+}
+
+const char* const bijectivity_note =
+  "global bijectivity (the scaffold) is not implemented yet: charts may overlap in UV space";
 
 // ---------------------------------------------------------------------------
 // Options
@@ -69,7 +96,23 @@ struct Options
   std::string report;          // empty: no JSON report
   bool keep_seams = false;
   bool quiet = false;
-  std::size_t max_iterations = default_max_iterations;
+  bool no_bijectivity = false;            // accepted; the only behavior until the scaffold lands
+  bool has_distortion_bound = false;
+  double distortion_bound = default_distortion_bound;
+  bool has_seam_weight = false;
+  double seam_weight = 0;
+  bool has_max_iterations = false;
+  std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
+
+  Mode mode() const
+  {
+    return keep_seams ? Mode::KEEP_SEAMS : has_seam_weight ? Mode::SEAM_WEIGHT : Mode::DISTORTION_BOUND;
+  }
+  std::size_t iteration_cap() const
+  {
+    return has_max_iterations ? max_iterations
+                              : keep_seams ? default_max_iterations_keep : default_max_iterations_seams;
+  }
 };
 
 enum class Parse_status { RUN, HELP, ERROR };
@@ -78,35 +121,62 @@ void print_help(std::ostream& os)
 {
   os << "Usage: " << program_name << " INPUT [options]\n"
      << "\n"
-     << "Computes a UV map (texture coordinates) of a triangle mesh with low symmetric\n"
-     << "Dirichlet distortion and writes it as an OBJ with per-corner texture coordinates.\n"
+     << "Cuts a triangle mesh open along short seams and computes its UV map (texture\n"
+     << "coordinates) so that the symmetric Dirichlet distortion E_SD stays below a bound\n"
+     << "(OptCuts; 4 is an isometry), and writes it as an OBJ with per-corner texture\n"
+     << "coordinates. Progress goes to stderr (one updating line on a terminal).\n"
      << "\n"
      << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
      << "                          three corners are triangulated (a note says so); a\n"
      << "                          non-manifold mesh or a zero-area triangle is an error.\n"
-     << "                          Seams are not optimized yet: the mesh must be a\n"
-     << "                          topological disk, or closed of genus 0 (then cut open by\n"
-     << "                          a two-edge slit).\n"
+     << "                          Each connected component must be a topological disk or\n"
+     << "                          closed of genus 0 (then first cut open by a short slit).\n"
      << "\n"
      << "Options:\n"
      << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
      << "                          \"_uv.obj\", in the current directory)\n"
-     << "  --keep-seams            keep the input's seams (none for a disk) and only minimize\n"
-     << "                          distortion. This is the only mode until seam optimization\n"
-     << "                          is available, and the default for now (a note says so when\n"
-     << "                          the option is not given)\n"
-     << "  --max-iterations N      cap on Newton iterations (default: " << default_max_iterations
+     << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
+     << "                          as found while E_SD <= B (default: " << default_distortion_bound
      << ")\n"
-     << "  --report OUT.json       write a JSON report: status, message, e_sd, initial_e_sd,\n"
-     << "                          seam_length, seam_length_normalized, charts, iterations,\n"
-     << "                          topology_operations, lambda, bound_met, seconds, faces,\n"
-     << "                          vertices, input, output (default: no report)\n"
-     << "  --quiet                 no summary or notes on stderr; errors are still printed\n"
-     << "                          (default: off)\n"
+     << "  --seam-weight L         a fixed seam weight lambda in [0, 1) instead of the bound:\n"
+     << "                          minimize (1 - L) E_SD + L E_seam, no bound (default: off;\n"
+     << "                          not with --distortion-bound)\n"
+     << "  --no-bijectivity        do not prevent overlaps between charts. Global bijectivity\n"
+     << "                          (the scaffold) is not implemented yet, so this is the only\n"
+     << "                          behavior for now, with or without the option: results may\n"
+     << "                          overlap in UV space (default: off)\n"
+     << "  --keep-seams            keep the input's seams (none for a disk; a closed genus-0\n"
+     << "                          mesh is cut by a two-edge slit) and only minimize\n"
+     << "                          distortion: the previous distortion-only mode (default: off)\n"
+     << "  --max-iterations N      cap on Newton iterations (default: "
+     << default_max_iterations_seams << ", or " << default_max_iterations_keep
+     << " with --keep-seams)\n"
+     << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
+     << "                          initial_e_sd, distortion_bound, bound_met, seam_weight,\n"
+     << "                          lambda, seam_length, seam_length_normalized, charts,\n"
+     << "                          iterations, topology_operations, bijective, notes, seconds,\n"
+     << "                          faces, vertices, input, output (default: no report)\n"
+     << "  --quiet                 no progress, summary or notes on stderr; errors are still\n"
+     << "                          printed (default: off)\n"
      << "  -h, --help              print this help and exit\n"
      << "\n"
-     << "Exit status: 0 success (also when the iteration cap was reached: see the report),\n"
-     << "1 invalid input or failed run, 2 invalid options.\n";
+     << "Exit status: 0 success (also when the iteration cap was reached or the bound could\n"
+     << "not be met: see the warning and the report), 1 invalid input or failed run,\n"
+     << "2 invalid options.\n";
+}
+
+// A whole-string finite number ("4.1", "1e-2"); false for anything else.
+bool parse_double(const std::string& s, double& value)
+{
+  if(s.empty() || std::isspace(static_cast<unsigned char>(s[0])))
+    return false;
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(s.c_str(), &end);
+  if(end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(x))
+    return false;
+  value = x;
+  return true;
 }
 
 bool parse_size(const std::string& s, std::size_t& value)
@@ -203,6 +273,36 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         return Parse_status::ERROR;
       options.quiet = true;
     }
+    else if(name == "--no-bijectivity")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.no_bijectivity = true;
+    }
+    else if(name == "--distortion-bound")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.distortion_bound) || !(options.distortion_bound > 4.))
+      {
+        error = "option '--distortion-bound' needs a number > 4 (4 is an isometry), not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_distortion_bound = true;
+    }
+    else if(name == "--seam-weight")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.seam_weight) || !(options.seam_weight >= 0. && options.seam_weight < 1.))
+      {
+        error = "option '--seam-weight' needs a number in [0, 1), not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_seam_weight = true;
+    }
     else if(name == "--max-iterations")
     {
       std::string s;
@@ -213,12 +313,24 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         error = "option '--max-iterations' needs a non-negative integer, not '" + s + "'";
         return Parse_status::ERROR;
       }
+      options.has_max_iterations = true;
     }
     else
     {
       error = "unknown option '" + arg + "'";
       return Parse_status::ERROR;
     }
+  }
+  if(options.has_distortion_bound && options.has_seam_weight)
+  {
+    error = "options '--distortion-bound' and '--seam-weight' are exclusive (a bound, or a fixed seam weight)";
+    return Parse_status::ERROR;
+  }
+  if(options.keep_seams && (options.has_distortion_bound || options.has_seam_weight))
+  {
+    error = std::string("option '--keep-seams' does not optimize seams: it takes no '") +
+            (options.has_distortion_bound ? "--distortion-bound" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
   }
   if(options.input.empty())
   {
@@ -236,6 +348,10 @@ struct Run_report
   std::string status = "ERROR_INPUT";   // Error_code name, or a CLI-level ERROR_*
   std::string message;
   SMSO::Optimization_result result;
+  Mode mode = Mode::DISTORTION_BOUND;
+  double distortion_bound = default_distortion_bound;   // bound mode only
+  double seam_weight = 0;                               // seam-weight mode only
+  std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
   std::string input, output;
   std::size_t faces = 0, vertices = 0;
   double seconds = 0;                    // the optimization call
@@ -310,18 +426,33 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("message", str(r.message));
   fields.emplace_back("input", str(r.input));
   fields.emplace_back("output", r.output.empty() ? "null" : str(r.output));
-  fields.emplace_back("mode", str("keep_seams"));
+  const bool ran = res.has_result();
+  fields.emplace_back("mode", str(mode_name(r.mode)));
   fields.emplace_back("faces", std::to_string(r.faces));
   fields.emplace_back("vertices", std::to_string(r.vertices));
   fields.emplace_back("e_sd", json_number(res.distortion));
   fields.emplace_back("initial_e_sd", json_number(res.initial_distortion));
+  fields.emplace_back("distortion_bound",
+                      r.mode == Mode::DISTORTION_BOUND ? json_number(r.distortion_bound, 15) : "null");
+  // Judged here from the figures (the library's flag refers to its default
+  // bound in the other modes): null where there is no bound.
+  fields.emplace_back("bound_met", r.mode != Mode::DISTORTION_BOUND || !ran
+                                     ? "null"
+                                     : (res.distortion <= r.distortion_bound ? "true" : "false"));
+  fields.emplace_back("seam_weight", r.mode == Mode::SEAM_WEIGHT ? json_number(r.seam_weight, 15) : "null");
+  fields.emplace_back("lambda", r.mode == Mode::KEEP_SEAMS || !ran ? "null" : json_number(res.lambda));
   fields.emplace_back("seam_length", json_number(res.seam_length));
   fields.emplace_back("seam_length_normalized", json_number(res.seam_length_normalized));
   fields.emplace_back("charts", std::to_string(res.charts));
   fields.emplace_back("iterations", std::to_string(res.iterations));
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
-  fields.emplace_back("lambda", json_number(res.lambda));
-  fields.emplace_back("bound_met", res.bound_met ? "true" : "false");
+  fields.emplace_back("bijective", "false");   // no scaffold yet, whatever --no-bijectivity says
+  {
+    std::string notes = "[";
+    for(std::size_t i = 0; i < r.notes.size(); ++i)
+      notes += (i ? ", " : "") + str(r.notes[i]);
+    fields.emplace_back("notes", notes + "]");
+  }
   fields.emplace_back("seconds", json_number(r.seconds, 6));
   fields.emplace_back("total_seconds", json_number(r.total_seconds, 6));
 
@@ -592,6 +723,81 @@ void print_error(const std::string& line)
   std::cerr << program_name << ": error: " << line << std::endl;
 }
 
+// ---------------------------------------------------------------------------
+// Progress on stderr, fed by the library's visitor. Each call only copies the
+// library's progress figures and reads the clock; a line is printed at most
+// every `interval` (about 5 a second), and `finish()` prints the last state
+// if it was held back. On a terminal the line is rewritten in place ('\r');
+// otherwise each state is a plain line.
+class Progress_printer
+{
+public:
+  explicit Progress_printer(bool enabled)
+    : m_enabled(enabled), m_tty(enabled && ::isatty(STDERR_FILENO) == 1),
+      m_last(std::chrono::steady_clock::now())
+  {}
+
+  bool on_iteration(const SMSO::Seam_optimization_progress& p) { return update(p); }
+  bool on_topology_operation(const SMSO::Seam_optimization_progress& p) { return update(p); }
+  bool on_lambda_update(const SMSO::Seam_optimization_progress& p) { return update(p); }
+
+  // The last state (if held back), and the newline that ends the updating line.
+  void finish()
+  {
+    if(!m_enabled)
+      return;
+    if(m_pending)
+      print(m_state);
+    if(m_tty && m_width > 0)
+      std::fputc('\n', stderr);
+    std::fflush(stderr);
+    m_width = 0;
+  }
+
+private:
+  bool update(const SMSO::Seam_optimization_progress& p)
+  {
+    if(!m_enabled)
+      return true;
+    m_state = p;
+    m_pending = true;
+    const auto now = std::chrono::steady_clock::now();
+    if(now - m_last >= interval)
+    {
+      m_last = now;
+      print(p);
+    }
+    return true;   // never cancels
+  }
+
+  void print(const SMSO::Seam_optimization_progress& p)
+  {
+    char line[160];
+    int n = std::snprintf(line, sizeof(line), "it %zu  ops %zu  E_SD %.6g  E_se %.4g  lambda %.4g  t %.1f s",
+                          p.iterations, p.topology_operations, p.distortion, p.seam_length_normalized,
+                          p.lambda, p.seconds);
+    n = std::max(0, std::min(n, int(sizeof(line)) - 1));
+    if(m_tty)
+    {
+      // Blank out what is left of a longer previous line.
+      std::fprintf(stderr, "\r%s%*s", line, m_width > n ? m_width - n : 0, "");
+      m_width = std::max(m_width, n);
+    }
+    else
+      std::fprintf(stderr, "%s\n", line);
+    std::fflush(stderr);
+    m_pending = false;
+  }
+
+  static constexpr std::chrono::milliseconds interval{200};
+  bool m_enabled;
+  bool m_tty;
+  std::chrono::steady_clock::time_point m_last;
+  SMSO::Seam_optimization_progress m_state;
+  bool m_pending = false;
+  int m_width = 0;   // of the longest line written on the current terminal line
+};
+
 // Writes the report if one was asked for; a failure to do so is an error only
 // when nothing else failed (one error line per run).
 int finish(const Options& options, Run_report& report, std::chrono::steady_clock::time_point t0,
@@ -614,11 +820,17 @@ int run(const Options& options)
   const auto t0 = std::chrono::steady_clock::now();
   Run_report report;
   report.input = options.input;
+  report.mode = options.mode();
+  report.distortion_bound = options.distortion_bound;
+  report.seam_weight = options.seam_weight;
 
   // Notes are printed only with the summary, so that a failure is exactly one line.
+  // The report always says that the result is not guaranteed bijective; stderr
+  // says it when the user did not ask for --no-bijectivity.
   std::vector<std::string> notes;
-  if(!options.keep_seams)
-    notes.push_back("seam optimization is not available yet; running in --keep-seams mode");
+  report.notes.push_back(bijectivity_note);
+  if(report.mode != Mode::KEEP_SEAMS && !options.no_bijectivity)
+    notes.push_back(bijectivity_note);
 
   Mesh mesh;
   Load_failure failure;
@@ -629,18 +841,43 @@ int run(const Options& options)
     print_error(failure.line);
     return finish(options, report, t0, EXIT_RUN_FAILED);
   }
+  for(const std::string& n : notes)
+    if(n != bijectivity_note)
+      report.notes.push_back(n);
   report.faces = num_faces(mesh);
   report.vertices = num_vertices(mesh);
 
   auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
 
+  // Packs are joined from the right, one parameter at a time: in the
+  // package's parameters.h, combine() of a pack of three or more parameters
+  // with another silently drops some of them (a lookup inside append()).
+  namespace NP = SMSO::parameters;
+  const auto common = NP::combine(NP::edge_is_seam_map(seams),
+                                  NP::maximum_number_of_iterations(options.iteration_cap()));
+  Progress_printer progress(!options.quiet);
+  const auto with_visitor = NP::combine(
+    NP::bijective(!options.no_bijectivity),
+    NP::combine(CGAL::parameters::visitor(std::ref(progress)), common));
+
   const auto t_opt = std::chrono::steady_clock::now();
-  report.result = SMSO::minimize_distortion(
-    mesh, uvmap,
-    SMSO::parameters::combine(SMSO::parameters::edge_is_seam_map(seams),
-                              SMSO::parameters::maximum_number_of_iterations(options.max_iterations)));
+  switch(report.mode)
+  {
+    case Mode::KEEP_SEAMS:
+      report.result = SMSO::minimize_distortion(mesh, uvmap, common);
+      break;
+    case Mode::DISTORTION_BOUND:
+      report.result = SMSO::optimize_seams(
+        mesh, uvmap, NP::combine(NP::distortion_bound(options.distortion_bound), with_visitor));
+      break;
+    case Mode::SEAM_WEIGHT:
+      report.result = SMSO::optimize_seams(
+        mesh, uvmap, NP::combine(NP::seam_weight(options.seam_weight), with_visitor));
+      break;
+  }
   report.seconds = seconds_since(t_opt);
+  progress.finish();
   const SMSO::Optimization_result& res = report.result;
   report.status = status_name(res.status);
   report.message = res.message;
@@ -674,14 +911,20 @@ int run(const Options& options)
     if(res.status != SMSO::OK)
       std::cerr << program_name << ": warning: " << SMSO::get_error_message(res.status)
                 << (res.message.empty() ? "" : ": " + res.message) << std::endl;
+    std::ostringstream what;
+    what << "E_SD " << format_double(res.initial_distortion, 6) << " -> " << format_double(res.distortion, 6);
+    if(report.mode == Mode::DISTORTION_BOUND)
+      what << " (bound " << format_double(options.distortion_bound, 6)
+           << (res.distortion <= options.distortion_bound ? ", met)" : ", NOT met)");
+    if(report.mode != Mode::KEEP_SEAMS)
+      what << ", lambda " << format_double(res.lambda, 4) << ", " << res.topology_operations
+           << " topology operations";
+    what << ", " << res.iterations << " iterations (" << format_double(report.seconds, 3)
+         << " s), normalized seam length " << format_double(res.seam_length_normalized, 4);
     std::cerr << program_name << ": "
               << std::filesystem::path(options.input).filename().string() << ": "
               << report.faces << " faces, " << res.charts << (res.charts == 1 ? " chart" : " charts")
-              << ", E_SD " << format_double(res.initial_distortion, 6) << " -> "
-              << format_double(res.distortion, 6) << " in " << res.iterations << " iterations ("
-              << format_double(report.seconds, 3) << " s), normalized seam length "
-              << format_double(res.seam_length_normalized, 4) << "; wrote "
-              << report.output << std::endl;
+              << ", " << what.str() << "; wrote " << report.output << std::endl;
   }
   return finish(options, report, t0, EXIT_OK);
 }

@@ -42,12 +42,20 @@ check(f == r["faces"] and v == r["vertices"], "OBJ has %d v, %d f" % (v, f))
 check(vt == v, "%d vt for %d vertices" % (vt, v))
 PY
 
-# The default output name, the note about the mode, and --quiet.
-"$BIN" "$DATA/bimba_i_f10000.obj" --max-iterations 3 >out.txt 2>err.txt
+python3 -c 'import json,sys; r=json.load(open("r.json")); sys.exit(not (r["mode"] == "keep-seams"
+    and r["topology_operations"] == 0 and r["lambda"] is None and r["bound_met"] is None))' \
+  || fail "keep-seams report: mode/topology_operations/lambda/bound_met: $(cat r.json)"
+
+# The default output name (seam optimization is the default mode now; three
+# Newton iterations only, the cap is a warning, not a failure), and --quiet.
+"$BIN" "$DATA/bimba_i_f10000.obj" --max-iterations 3 --report d.json >out.txt 2>err.txt
 rc=$?
 [ "$rc" -eq 0 ] || fail "default run: exit code $rc (stderr: $(cat err.txt))"
 [ -s bimba_i_f10000_uv.obj ] || fail "default output bimba_i_f10000_uv.obj not written"
-grep -q "not available yet" err.txt || fail "no note that seam optimization is not available: $(cat err.txt)"
+python3 -c 'import json,sys; r=json.load(open("d.json")); sys.exit(not (r["mode"] == "distortion-bound"
+    and r["status"] == "WARNING_MAXIMUM_ITERATIONS" and r["iterations"] == 3))' \
+  || fail "default run report: $(cat d.json)"
+grep -q "warning: Maximum number of iterations" err.txt || fail "no warning about the cap: $(cat err.txt)"
 "$BIN" "$DATA/bimba_i_f10000.obj" --quiet --max-iterations 3 -o q.obj >out.txt 2>err.txt
 rc=$?
 [ "$rc" -eq 0 ] || fail "--quiet run: exit code $rc"

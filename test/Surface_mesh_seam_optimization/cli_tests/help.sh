@@ -11,9 +11,12 @@ for flag in --help -h; do
   [ "$rc" -eq 0 ] || fail "$flag: exit code $rc, expected 0"
   [ ! -s err.txt ] || fail "$flag: unexpected stderr: $(cat err.txt)"
   grep -q "^Usage: optimize_seams INPUT" out.txt || fail "$flag: no usage line"
-  for opt in -o --output --keep-seams --report --quiet --max-iterations --help; do
+  for opt in -o --output --distortion-bound --seam-weight --no-bijectivity --keep-seams --report \
+             --quiet --max-iterations --help; do
     grep -q -- "$opt\b" out.txt || fail "$flag: option $opt is not listed"
   done
   grep -q "default" out.txt || fail "$flag: defaults are not given"
+  grep -q "default: 4.1" out.txt || fail "$flag: the default bound 4.1 is not given"
+  grep -qi "not implemented yet" out.txt || fail "$flag: does not say that bijectivity is not implemented"
 done
 echo "ok"
