@@ -1,5 +1,9 @@
 // optimize_seams (OptCuts) on small shared meshes: bound met, no flip, one
 // chart, seams = UV discontinuities, deterministic, monotone in the bound.
+// Assertions on in this test: the core checks its invariants (manifold UV
+// mesh, one UV vertex per corner, no flip, open charts) after every topology
+// operation.
+#undef NDEBUG
 #define BOOST_TEST_MODULE optimize_seams
 #include <boost/test/unit_test.hpp>
 
@@ -8,6 +12,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 
 #include <string>
 #include <vector>
@@ -89,6 +94,41 @@ BOOST_AUTO_TEST_CASE(the_bound_is_met_on_small_meshes)
     BOOST_TEST(r.result.topology_operations > 0u);
     check_valid(r);
   }
+}
+
+BOOST_AUTO_TEST_CASE(invariant_check_detects_broken_labellings)
+{
+  // The check itself must be able to fail: break a valid cut mesh in three ways.
+  Run r;
+  run("cat_f1500.obj", r, SMSO_np::distortion_bound(4.1));
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(r.sm, get(CGAL::vertex_point, r.sm), cm, copy, msg) == SMSO::OK);
+  std::vector<double> corner_uvs;
+  BOOST_REQUIRE(SMSO::internal::read_uv_map(r.sm, r.uv, copy, corner_uvs, msg) == SMSO::OK);
+  std::vector<char> seam;
+  SMSO::internal::seams_from_corner_uvs(cm, corner_uvs, seam);
+  SMSO::internal::label_uv_vertices(cm, seam);
+  SMSO::internal::set_uvs_from_corners(cm, corner_uvs);
+  BOOST_TEST(SMSO::internal::check_invariants(cm) == "");
+
+  SMSO::internal::Cut_mesh flipped = cm;
+  std::swap(flipped.corner_uv[0], flipped.corner_uv[1]); // also moves UV vertices between 3D vertices
+  BOOST_TEST(SMSO::internal::check_invariants(flipped) != "");
+  // two non-adjacent corners of one fan share a new UV vertex: a pinched vertex
+  SMSO::internal::Cut_mesh pinched = cm;
+  std::vector<int> fan;
+  int c = 0;
+  while(SMSO::internal::uv_fan(cm, c, fan), fan.size() < 5) ++c;
+  const int u = pinched.corner_uv[fan[0]];
+  pinched.uv_vertex.push_back(pinched.uv_vertex[u]);
+  pinched.uv.push_back(pinched.uv[2*u]); pinched.uv.push_back(pinched.uv[2*u+1]);
+  pinched.corner_uv[fan[0]] = pinched.corner_uv[fan[2]] = int(pinched.uv_vertex.size()) - 1;
+  BOOST_TEST(SMSO::internal::check_invariants(pinched).find("not manifold") != std::string::npos);
+  SMSO::internal::Cut_mesh moved = cm;
+  moved.uv[2 * moved.corner_uv[0]] += 1e3; // drags triangles over each other
+  BOOST_TEST(SMSO::internal::check_invariants(moved) != "");
 }
 
 BOOST_AUTO_TEST_CASE(results_are_deterministic)

@@ -11,10 +11,12 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 #include <CGAL/Real_timer.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cmath>
@@ -166,6 +168,7 @@ private:
   void apply(const Operation& op)
   {
     Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
+    CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
     ++m_operations;
     if(op.type != CORNER_MERGE)
       for(int t : op.tips) m_tips.push_back(t);
