@@ -85,6 +85,18 @@ BOOST_AUTO_TEST_CASE(named_parameters_combine_in_any_order)
   BOOST_TEST(choose_parameter(get_parameter(b, CGAL::internal_np::number_of_iterations), 0) == 7);
   BOOST_TEST((is_default_parameter<decltype(a), SMSO::internal_np::bijective_t>::value));
   BOOST_TEST((!is_default_parameter<decltype(a), CGAL::internal_np::vertex_point_t>::value));
+  // long packs on both sides keep every parameter
+  auto d = combine(SMSO_np::edge_is_seam_map(1).vertex_point_map(vpm).number_of_iterations(9),
+                   maximum_number_of_iterations(std::size_t(1)), seam_weight(0.025),
+                   bijective(false).geom_traits(3), use_uv_map_as_initial(true));
+  BOOST_TEST(choose_parameter(get_parameter(d, SMSO::internal_np::edge_is_seam_map), 0) == 1);
+  BOOST_TEST(choose_parameter(get_parameter(d, CGAL::internal_np::number_of_iterations), 0) == 9);
+  BOOST_TEST(choose_parameter(get_parameter(d, SMSO::internal_np::maximum_number_of_iterations), std::size_t(0)) == 1u);
+  BOOST_TEST(choose_parameter(get_parameter(d, SMSO::internal_np::seam_weight), 0.) == 0.025);
+  BOOST_TEST(choose_parameter(get_parameter(d, SMSO::internal_np::bijective), true) == false);
+  BOOST_TEST(choose_parameter(get_parameter(d, CGAL::internal_np::geom_traits), 0) == 3);
+  BOOST_TEST(choose_parameter(get_parameter(d, SMSO::internal_np::use_uv_map_as_initial), false) == true);
+  BOOST_TEST((!is_default_parameter<decltype(d), CGAL::internal_np::vertex_point_t>::value));
   // a parameter given twice keeps its first value
   auto c = combine(distortion_bound(4.3), distortion_bound(4.5));
   BOOST_TEST(choose_parameter(get_parameter(c, SMSO::internal_np::distortion_bound), 0.) == 4.3);

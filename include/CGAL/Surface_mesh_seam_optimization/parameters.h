@@ -69,20 +69,37 @@ template <typename T, typename Base>
 struct Is_default_pack<CGAL::Named_function_parameters<T, CGAL::internal_np::all_default_t, Base> >
   : std::true_type {};
 
-// `a` with its terminal `No_property` replaced by `b`.
+// `a` with its terminal `No_property` replaced by `b`. A class template, not
+// overloaded functions: a function's trailing return type cannot see its own
+// overload, and the call then slices a longer pack down to its last link.
+template <typename NP1, typename NP2>
+struct Append;
+
 template <typename T, typename Tag, typename NP2>
-CGAL::Named_function_parameters<T, Tag, NP2>
-append(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& a, const NP2& b)
+struct Append<CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>, NP2>
 {
-  return CGAL::Named_function_parameters<T, Tag, NP2>(a.v, b);
-}
+  typedef CGAL::Named_function_parameters<T, Tag, NP2> type;
+  static type run(const CGAL::Named_function_parameters<T, Tag, CGAL::internal_np::No_property>& a, const NP2& b)
+  {
+    return type(a.v, b);
+  }
+};
 
 template <typename T, typename Tag, typename Base, typename NP2>
-auto append(const CGAL::Named_function_parameters<T, Tag, Base>& a, const NP2& b)
-  -> CGAL::Named_function_parameters<T, Tag, decltype(append(std::declval<const Base&>(), b))>
+struct Append<CGAL::Named_function_parameters<T, Tag, Base>, NP2>
 {
-  typedef decltype(append(std::declval<const Base&>(), b)) New_base;
-  return CGAL::Named_function_parameters<T, Tag, New_base>(a.v, append(static_cast<const Base&>(a), b));
+  typedef Append<Base, NP2> Inner;
+  typedef CGAL::Named_function_parameters<T, Tag, typename Inner::type> type;
+  static type run(const CGAL::Named_function_parameters<T, Tag, Base>& a, const NP2& b)
+  {
+    return type(a.v, Inner::run(static_cast<const Base&>(a), b));
+  }
+};
+
+template <typename NP1, typename NP2>
+typename Append<NP1, NP2>::type append(const NP1& a, const NP2& b)
+{
+  return Append<NP1, NP2>::run(a, b);
 }
 
 } // namespace internal
