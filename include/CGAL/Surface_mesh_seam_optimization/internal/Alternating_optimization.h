@@ -73,7 +73,7 @@ public:
       if(!m_settings.fixed_lambda)
       {
         const double b = m_settings.distortion_bound;
-        if(e_sd <= b && e_sd >= b - 1e-3) break;
+        if(e_sd <= b && e_sd >= b - 1e-3) { status = polish_with_merges(); break; }
         // A stationary (E_se, E_SD) seen before: the dual step only cycles
         // split/merge pairs from here (lambda drifts in its last digits).
         const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
@@ -163,6 +163,41 @@ private:
       }
     }
     return any;
+  }
+
+  // At the bound: zip seams back while the bound still holds after descent
+  // (a failed try is undone, and ends the polish).
+  Error_code polish_with_merges()
+  {
+    const double b = m_settings.distortion_bound;
+    int failures = 0;
+    std::vector<std::pair<int, int> > failed; // (uv_a, uv_b) tried in vain at this configuration
+    while(failures < 5)
+    {
+      std::vector<Operation> ops;
+      m_topology.merges(ops);
+      const Operation* best = nullptr;
+      for(const Operation& op : ops)
+      {
+        if(std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) != failed.end()) continue;
+        if(!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) best = &op;
+      }
+      if(!best) return OK;
+      const std::vector<int> corner_uv = m_cm.corner_uv, uv_vertex = m_cm.uv_vertex;
+      const std::vector<double> uv = m_cm.uv;
+      const std::pair<int, int> tried(best->uv_a, best->uv_b);
+      apply(*best);
+      if(m_cancelled) return WARNING_CANCELLED;
+      const Error_code status = descend();
+      if(status != OK) return status;
+      const double e_sd = distortion();
+      if(e_sd <= b) { record(e_sd, seam_cost()); failed.clear(); continue; }
+      m_cm.corner_uv = corner_uv; m_cm.uv_vertex = uv_vertex; m_cm.uv = uv;
+      m_newton.rebuild_pattern();
+      failed.push_back(tried);
+      ++failures;
+    }
+    return OK;
   }
 
   void apply(const Operation& op)
