@@ -105,7 +105,8 @@ for m in "${meshes[@]}"; do
   printf '%-24s %6.1fs  %s\n' "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$line" >&2
 done
 
-commit=$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)
+# SMSO_BENCH_COMMIT names the commit when the tree is an export (git archive) without .git
+commit=${SMSO_BENCH_COMMIT:-$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)}
 dirty=$(git -C "$repo" status --porcelain -- include benchmark/Surface_mesh_seam_optimization/seam_benchmark.cpp 2>/dev/null | wc -l)
 cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
 
@@ -149,10 +150,11 @@ for r in rows:
     o["ref_bijective"] = rb["bijective"] if rb else None
     for k in ("e_sd", "seam_norm", "wall_s", "newton_iterations", "peak_mb"):
         o["ref_" + k] = num(rb[k]) if rb else None
-    se = num(o["uvm_seam_length_normalized"]) if o["uvm_seam_length_normalized"] is not None else num(r["seam_length_normalized"])
+    has = r["status"] == "OK" or r["status"].startswith("WARNING")
+    se = None if not has else num(o["uvm_seam_length_normalized"]) if o["uvm_seam_length_normalized"] is not None else num(r["seam_length_normalized"])
     o["seam_ratio"] = se / o["ref_seam_norm"] if se is not None and o["ref_seam_norm"] else None
     s = num(r["seconds"])
-    o["speedup"] = o["ref_wall_s"] / s if s and o["ref_wall_s"] and r["status"] != "TIMEOUT" else None
+    o["speedup"] = o["ref_wall_s"] / s if has and s and o["ref_wall_s"] else None
     out.append(o)
 
 cols = list(out[0].keys()) if out else fields

@@ -72,12 +72,18 @@ struct Row
   double seconds = 0;
   std::size_t iterations = 0, topology_operations = 0, charts = 0, flips = 0;
   double e_sd = 0, seam = 0, lambda = 0;
-  bool bound_met = false;
+  bool bound_met = false, has_result = false;
   std::string status = "ERROR_UNKNOWN";
 };
 
 static void print(const Row& r)
 {
+  if(!r.has_result) // rejected or unreadable: the figures are left empty
+  {
+    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
+    std::fflush(stdout);
+    return;
+  }
   std::printf("%s,%zu,%.3f,%zu,%zu,%.6f,%.6f,%zu,%zu,%.1f,%s,%d,%.6g\n", r.name.c_str(), r.faces, r.seconds,
               r.iterations, r.topology_operations, r.e_sd, r.seam, r.charts, r.flips, peak_mb(), r.status.c_str(),
               int(r.bound_met), r.lambda);
@@ -110,6 +116,7 @@ static Row run(const std::string& file, double bound, std::size_t max_iterations
     if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";
     return row;
   }
+  row.has_result = true;
   row.iterations = r.iterations;
   row.topology_operations = r.topology_operations;
   row.e_sd = r.distortion;
