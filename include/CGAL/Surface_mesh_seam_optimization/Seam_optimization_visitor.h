@@ -9,25 +9,32 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// The state passed to a visitor.
+/// \ingroup PkgSurfaceMeshSeamOptimizationVisitor
+/// The state of a run of `optimize_seams()`, passed to every member of a
+/// model of `SeamOptimizationVisitor`.
 struct Seam_optimization_progress
 {
   std::size_t iterations = 0;          ///< Newton iterations so far
-  std::size_t topology_operations = 0; ///< splits and merges applied so far
-  double distortion = 0;               ///< current E_SD
-  double seam_length_normalized = 0;   ///< current E_se
-  double lambda = 0;                   ///< current seam weight of E_w
-  double seconds = 0;                  ///< since the start
+  std::size_t topology_operations = 0; ///< splits and merges applied so far (fracture propagation included)
+  double distortion = 0;               ///< current distortion energy of the descent (E_SD with the default energy)
+  double seam_length_normalized = 0;   ///< current normalized seam length E_se (unweighted)
+  double lambda = 0;                   ///< current seam weight of E_w = (1 - lambda) E_SD + lambda E_se
+  double seconds = 0;                  ///< wall-clock seconds since the alternating optimization started
 };
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// \ingroup PkgSurfaceMeshSeamOptimizationVisitor
 /// The default model of `SeamOptimizationVisitor`: does nothing, never cancels.
-/// Each member returns `false` to stop the run (the best result so far is kept).
+/// In a model of the concept, each member returns `false` to stop the run
+/// (the best result so far is kept).
+///
+/// \cgalModels `SeamOptimizationVisitor`
 struct Default_seam_optimization_visitor
 {
+  /// after every Newton iteration; returns `true`
   bool on_iteration(const Seam_optimization_progress&) { return true; }
+  /// after every split or merge; returns `true`
   bool on_topology_operation(const Seam_optimization_progress&) { return true; }
+  /// after every dual update of lambda; returns `true`
   bool on_lambda_update(const Seam_optimization_progress&) { return true; }
 };
 
