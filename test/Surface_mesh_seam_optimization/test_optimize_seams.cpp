@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 
@@ -204,4 +205,59 @@ BOOST_AUTO_TEST_CASE(the_visitor_sees_progress_and_can_cancel)
   BOOST_TEST(visitor.operations >= 5u);
   BOOST_TEST(r.result.iterations == visitor.iterations);
   BOOST_TEST(SMSO::number_of_flipped_triangles(r.sm, r.uv) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)
+{
+  Run reference;
+  run("bishop_part_f1000.obj", reference, SMSO_np::distortion_bound(4.1));
+
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/bishop_part_f1000.obj", sm));
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(-1, -1)).first;
+  Seam_map seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  SMSO::Seam_optimizer<Surface_mesh> optimizer(sm, uv, SMSO_np::distortion_bound(4.1));
+  BOOST_REQUIRE(optimizer.status() == SMSO::OK);
+  BOOST_TEST(uv[*sm.halfedges().begin()] == Point_2(-1, -1)); // nothing written yet
+  std::size_t steps = 0;
+  double previous_se = optimizer.seam_length_normalized();
+  bool seams_grew = false;
+  while(optimizer.step())
+  {
+    ++steps;
+    seams_grew = seams_grew || optimizer.seam_length_normalized() > previous_se;
+    previous_se = optimizer.seam_length_normalized();
+    if(steps == 3)
+    {
+      // a snapshot mid-way is a valid cut too
+      Run mid;
+      mid.sm = sm;
+      mid.uv = mid.sm.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+      mid.seam = mid.sm.property_map<edge_descriptor, bool>("e:seam").first;
+      optimizer.write_uv_map(mid.uv);
+      optimizer.write_seam_map(mid.seam);
+      mid.result = optimizer.result();
+      check_valid(mid);
+    }
+  }
+  BOOST_TEST(steps > 3u);
+  BOOST_TEST(seams_grew);
+  const SMSO::Optimization_result r = optimizer.result();
+  BOOST_TEST(r.status == SMSO::OK);
+  BOOST_TEST(r.distortion == reference.result.distortion);
+  BOOST_TEST(r.seam_length == reference.result.seam_length);
+  BOOST_TEST(r.topology_operations == reference.result.topology_operations);
+  optimizer.write_uv_map(uv);
+  optimizer.write_seam_map(seam);
+  bool same = true;
+  for(halfedge_descriptor h : sm.halfedges())
+    if(!sm.is_border(h)) same = same && uv[h] == reference.uv[h];
+  BOOST_TEST(same);
+  BOOST_TEST(!optimizer.step());
+
+  Surface_mesh bad;
+  UV_map buv = bad.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  SMSO::Seam_optimizer<Surface_mesh> refused(bad, buv);
+  BOOST_TEST(refused.status() == SMSO::ERROR_EMPTY_MESH);
+  BOOST_TEST(!refused.step());
 }

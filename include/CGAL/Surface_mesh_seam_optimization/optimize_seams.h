@@ -5,8 +5,7 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZE_SEAMS_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
-#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Alternating_optimization.h>
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 
 #include <cmath>
 #include <functional>
@@ -87,54 +86,19 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   CGAL::Real_timer timer;
   timer.start();
   Optimization_result result;
-  auto fail = [&](Error_code code, const char* message) {
-    result.status = code;
-    result.message = message;
-    return result;
-  };
-
-  internal::Alternating_settings settings;
-  settings.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1);
-  if(!(settings.distortion_bound > 4.) || !std::isfinite(settings.distortion_bound))
-    return fail(ERROR_WRONG_PARAMETER, "distortion_bound must be a finite number > 4");
-  constexpr bool fixed = !parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
-  if constexpr(fixed)
-  {
-    settings.fixed_lambda = true;
-    settings.lambda = choose_parameter(get_parameter(np, internal_np::seam_weight), 0.);
-    if(!(settings.lambda >= 0. && settings.lambda < 1.))
-      return fail(ERROR_WRONG_PARAMETER, "seam_weight must be in [0, 1)");
-  }
-  // Stationary points between topology steps need not be polished: a looser
-  // decrease test saves most Newton iterations at no cost in seam length.
-  settings.newton.relative_decrease_tolerance = 3e-6;
-  settings.max_iterations =
-    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
-
   const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                  Eigen_simplicial_ldlt_traits());
   Default_seam_optimization_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
 
+  internal::Alternating_settings settings;
   internal::Cut_mesh cm;
   internal::Face_graph_copy<TriangleMesh> copy;
-  result.status = internal::initialize_cut_mesh(tm, uvmap, np, cm, copy, result.message);
+  std::vector<double> weight;
+  result.status = internal::setup_seam_optimization(tm, uvmap, np, energy, cm, copy, weight, settings, result.message);
   if(result.status != OK) return result;
 
-  std::vector<double> weight(cm.corner_vertex.size(), 1.);
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
-  {
-    auto wmap = get_parameter(np, internal_np::edge_seam_weight_map);
-    for(std::size_t h = 0; h < weight.size(); ++h)
-    {
-      weight[h] = double(get(wmap, edge(copy.corner_halfedge[h], tm)));
-      if(!(weight[h] >= 0) || !std::isfinite(weight[h]))
-        return fail(ERROR_WRONG_PARAMETER, "edge_seam_weight_map has a negative or non-finite weight");
-    }
-  }
-
-  internal::rescale_to_optimal(cm, energy);
   result.initial_distortion = internal::total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
 
   typedef std::remove_cv_t<decltype(energy)> Energy;

@@ -63,42 +63,60 @@ public:
 
   Error_code run()
   {
+    Error_code status = start();
+    while(status == OK && step(status)) {}
+    return finish(status);
+  }
+
+  // Pattern analysis and descent to the first stationary point.
+  Error_code start()
+  {
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
-    Error_code status = descend();
-    while(status == OK)
+    return descend();
+  }
+
+  // One alternation from a stationary point: stopping tests, dual update,
+  // topology operation, descent. False when the optimization is over;
+  // `status` then says why (OK: converged).
+  bool step(Error_code& status)
+  {
+    const double e_sd = distortion();
+    const double e_se = seam_cost();
+    record(e_sd, e_se);
+    if(!m_settings.fixed_lambda)
     {
-      const double e_sd = distortion();
-      const double e_se = seam_cost();
-      record(e_sd, e_se);
-      if(!m_settings.fixed_lambda)
-      {
-        const double b = m_settings.distortion_bound;
-        if(e_sd <= b && e_sd >= b - 1e-3) { status = polish_with_merges(); break; }
-        // A stationary (E_se, E_SD) seen before: the dual step only cycles
-        // split/merge pairs from here (lambda drifts in its last digits).
-        const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
-        if(!m_seen.insert(key).second) break;
-        // nor does it pay to go on long after the best feasible stopped improving
-        if(m_has_best && m_stationary_points++ > m_best_at + 50) break;
-      }
-      std::vector<Operation> ops;
-      gather_candidates(e_sd, ops);
-      if(!m_settings.fixed_lambda)
-      {
-        // above the bound only cuts, below only merges (the dual step makes them pay)
-        const bool above = e_sd > m_settings.distortion_bound;
-        ops.erase(std::remove_if(ops.begin(), ops.end(), [above](const Operation& op) {
-                    return above == (op.type == CORNER_MERGE); }), ops.end());
-      }
-      if(!m_settings.fixed_lambda && !dual_update(e_sd, ops)) break;
-      const Operation* best = nullptr;
-      for(const Operation& op : ops)
-        if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
-      if(!best || !(best->weighted(m_lambda) < 0)) break; // stationary in topology too
-      apply(*best);
-      if(m_cancelled) { status = WARNING_CANCELLED; break; }
-      status = descend();
+      const double b = m_settings.distortion_bound;
+      if(e_sd <= b && e_sd >= b - 1e-3) { status = polish_with_merges(); return false; }
+      // A stationary (E_se, E_SD) seen before: the dual step only cycles
+      // split/merge pairs from here (lambda drifts in its last digits).
+      const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
+      if(!m_seen.insert(key).second) return false;
+      // nor does it pay to go on long after the best feasible stopped improving
+      if(m_has_best && m_stationary_points++ > m_best_at + 50) return false;
     }
+    std::vector<Operation> ops;
+    gather_candidates(e_sd, ops);
+    if(!m_settings.fixed_lambda)
+    {
+      // above the bound only cuts, below only merges (the dual step makes them pay)
+      const bool above = e_sd > m_settings.distortion_bound;
+      ops.erase(std::remove_if(ops.begin(), ops.end(), [above](const Operation& op) {
+                  return above == (op.type == CORNER_MERGE); }), ops.end());
+    }
+    if(!m_settings.fixed_lambda && !dual_update(e_sd, ops)) return false;
+    const Operation* best = nullptr;
+    for(const Operation& op : ops)
+      if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
+    if(!best || !(best->weighted(m_lambda) < 0)) return false; // stationary in topology too
+    apply(*best);
+    if(m_cancelled) { status = WARNING_CANCELLED; return false; }
+    status = descend();
+    return status == OK;
+  }
+
+  // Keeps the best feasible configuration (bound mode).
+  Error_code finish(Error_code status)
+  {
     if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS)
     {
       record(distortion(), seam_cost());

@@ -1,0 +1,199 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_OPTIMIZER_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_OPTIMIZER_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Alternating_optimization.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// Reads the named parameters of the seam optimization and builds the core
+// mesh with its (rescaled) initial map; shared by optimize_seams() and
+// Seam_optimizer.
+template <typename TriangleMesh, typename UVMap, typename NamedParameters, typename Energy>
+Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                                   const Energy& energy, Cut_mesh& cm, Face_graph_copy<TriangleMesh>& copy,
+                                   std::vector<double>& weight, Alternating_settings& settings,
+                                   std::string& message)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  settings.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1);
+  if(!(settings.distortion_bound > 4.) || !std::isfinite(settings.distortion_bound))
+  {
+    message = "distortion_bound must be a finite number > 4";
+    return ERROR_WRONG_PARAMETER;
+  }
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+  {
+    settings.fixed_lambda = true;
+    settings.lambda = choose_parameter(get_parameter(np, internal_np::seam_weight), 0.);
+    if(!(settings.lambda >= 0. && settings.lambda < 1.))
+    {
+      message = "seam_weight must be in [0, 1)";
+      return ERROR_WRONG_PARAMETER;
+    }
+  }
+  // Stationary points between topology steps need not be polished: a looser
+  // decrease test saves Newton iterations at no cost in seam length.
+  settings.newton.relative_decrease_tolerance = 3e-6;
+  settings.max_iterations =
+    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
+
+  Error_code ec = initialize_cut_mesh(tm, uvmap, np, cm, copy, message);
+  if(ec != OK) return ec;
+
+  weight.assign(cm.corner_vertex.size(), 1.);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
+  {
+    auto wmap = get_parameter(np, internal_np::edge_seam_weight_map);
+    for(std::size_t h = 0; h < weight.size(); ++h)
+    {
+      weight[h] = double(get(wmap, edge(copy.corner_halfedge[h], tm)));
+      if(!(weight[h] >= 0) || !std::isfinite(weight[h]))
+      {
+        message = "edge_seam_weight_map has a negative or non-finite weight";
+        return ERROR_WRONG_PARAMETER;
+      }
+    }
+  }
+  rescale_to_optimal(cm, energy);
+  return OK;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// The class behind `optimize_seams()`, for users who want to step the
+/// optimization, look at it between steps, or stop it: the constructor
+/// validates the input and computes the initial map (nothing is written to
+/// the user's maps), `step()` performs one alternation (descent to a
+/// stationary point, dual update, topology operation), `run()` goes to the
+/// end, and `write_uv_map()` / `write_seam_map()` write the current result.
+///
+/// \tparam TriangleMesh a model of `FaceGraph`
+/// \tparam Energy a model of `DistortionEnergy`
+/// \tparam SolverTraits a model of `SparseSolverTraits`
+template <typename TriangleMesh,
+          typename Energy = Symmetric_Dirichlet_energy,
+          typename SolverTraits = Eigen_simplicial_ldlt_traits>
+class Seam_optimizer
+{
+  typedef internal::Alternating_optimization<Energy, SolverTraits, Default_seam_optimization_visitor> Core;
+
+public:
+  /// Takes the same named parameters as `optimize_seams()` (but `visitor`);
+  /// `uvmap` is read only with `use_uv_map_as_initial(true)`.
+  template <typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
+  Seam_optimizer(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
+    : m_tm(tm)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    m_timer.start();
+    m_energy = choose_parameter(get_parameter(np, internal_np::energy), Energy());
+    const SolverTraits solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), SolverTraits());
+    m_status = internal::setup_seam_optimization(tm, uvmap, np, m_energy, m_cm, m_copy, m_weight, m_settings, m_message);
+    if(m_status != OK) return;
+    m_initial_distortion = internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data());
+    m_core.reset(new Core(m_cm, m_energy, solver, m_weight, m_settings, m_visitor));
+    m_status = m_core->start();
+    m_running = (m_status == OK);
+  }
+
+  Seam_optimizer(const Seam_optimizer&) = delete;
+  Seam_optimizer& operator=(const Seam_optimizer&) = delete;
+
+  /// `OK` while running and after a converged run; an error code if the
+  /// input was refused (then nothing else may be called but `message()`).
+  Error_code status() const { return m_status; }
+  const std::string& message() const { return m_message; }
+  bool is_running() const { return m_running; }
+
+  /// One alternation; returns `false` when the optimization is over (then
+  /// the best feasible configuration has been restored, in bound mode).
+  bool step()
+  {
+    if(!m_running) return false;
+    if(!m_core->step(m_status))
+    {
+      m_status = m_core->finish(m_status);
+      m_running = false;
+    }
+    return m_running;
+  }
+
+  /// Steps to the end; returns the figures of the result.
+  Optimization_result run()
+  {
+    while(step()) {}
+    return result();
+  }
+
+  /// Figures of the current configuration.
+  Optimization_result result() const
+  {
+    Optimization_result r;
+    r.status = m_status;
+    r.message = m_message;
+    if(!m_core) return r;
+    internal::measure_result(m_cm, r);
+    r.initial_distortion = m_initial_distortion;
+    r.lambda = m_core->lambda();
+    r.iterations = m_core->iterations();
+    r.topology_operations = m_core->topology_operations();
+    r.bound_met = m_settings.fixed_lambda ? false : r.distortion <= m_settings.distortion_bound;
+    r.seconds = m_timer.time();
+    return r;
+  }
+
+  double distortion() const { return internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data()); }
+  double seam_length_normalized() const { return m_cm.seam_length() / m_cm.normalization_radius(); }
+  double lambda() const { return m_core ? m_core->lambda() : 0.; }
+
+  /// Writes the current UV map (every halfedge with a face).
+  template <typename UVMap>
+  void write_uv_map(UVMap uvmap) const
+  {
+    if(m_core) internal::write_uv_map(m_cm, m_copy, uvmap);
+  }
+  /// Writes the current seams (every edge).
+  template <typename EdgeSeamMap>
+  void write_seam_map(EdgeSeamMap seam_map) const
+  {
+    if(m_core) internal::write_seam_map(m_tm, m_cm, m_copy, seam_map);
+  }
+
+private:
+  const TriangleMesh& m_tm;
+  Energy m_energy;
+  internal::Cut_mesh m_cm;
+  internal::Face_graph_copy<TriangleMesh> m_copy;
+  std::vector<double> m_weight;
+  internal::Alternating_settings m_settings;
+  Default_seam_optimization_visitor m_visitor;
+  std::unique_ptr<Core> m_core;
+  Error_code m_status = OK;
+  std::string m_message;
+  bool m_running = false;
+  double m_initial_distortion = 0;
+  CGAL::Real_timer m_timer;
+};
+
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif
