@@ -205,6 +205,16 @@ BOOST_AUTO_TEST_CASE(the_visitor_sees_progress_and_can_cancel)
   BOOST_TEST(visitor.operations >= 5u);
   BOOST_TEST(r.result.iterations == visitor.iterations);
   BOOST_TEST(SMSO::number_of_flipped_triangles(r.sm, r.uv) == 0u);
+
+  // cancelling from the lambda update is a cancel too
+  struct Lambda_visitor : SMSO::Default_seam_optimization_visitor
+  {
+    bool on_lambda_update(const SMSO::Seam_optimization_progress&) { return false; }
+  } stop_at_lambda;
+  Run s;
+  run("cat_f1500.obj", s, CGAL::parameters::visitor(std::ref(stop_at_lambda)));
+  BOOST_TEST(s.result.status == SMSO::WARNING_CANCELLED);
+  BOOST_TEST(s.result.has_result());
 }
 
 BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)

@@ -103,7 +103,11 @@ public:
       ops.erase(std::remove_if(ops.begin(), ops.end(), [above](const Operation& op) {
                   return above == (op.type == CORNER_MERGE); }), ops.end());
     }
-    if(!m_settings.fixed_lambda && !dual_update(e_sd, ops)) return false;
+    if(!m_settings.fixed_lambda && !dual_update(e_sd, ops))
+    {
+      if(m_cancelled) status = WARNING_CANCELLED;
+      return false;
+    }
     const Operation* best = nullptr;
     for(const Operation& op : ops)
       if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
@@ -311,7 +315,8 @@ private:
       }
     }
     m_lambda = 1. / (1. + rho);
-    return m_visitor.on_lambda_update(progress());
+    if(!m_visitor.on_lambda_update(progress())) { m_cancelled = true; return false; }
+    return true;
   }
 
   void record(double e_sd, double e_se)
