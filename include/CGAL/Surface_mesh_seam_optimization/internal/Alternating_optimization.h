@@ -18,9 +18,16 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/assertions.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -86,7 +93,7 @@ public:
     if(!m_settings.fixed_lambda)
     {
       const double b = m_settings.distortion_bound;
-      if(e_sd <= b && e_sd >= b - 1e-3) { status = polish_with_merges(); return false; }
+      if(e_sd <= b && e_sd >= b - 1e-4) { status = polish_with_merges(); return false; }
       // A stationary (E_se, E_SD) seen before: the dual step only cycles
       // split/merge pairs from here (lambda drifts in its last digits).
       const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
@@ -266,7 +273,23 @@ private:
     rank_vertices(boundary, interior);
     const std::size_t nb = (std::min)(boundary.size(),
                                       (std::max)(std::size_t(20), std::size_t(std::pow(double(boundary.size()), 0.8))));
-    for(std::size_t i = 0; i < nb; ++i) m_topology.boundary_splits(boundary[i].second, ops);
+    // Independent stencil solves: in parallel where TBB is linked, gathered in
+    // candidate order so that results do not depend on the schedule.
+    std::vector<std::vector<Operation> > per_vertex(nb);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(nb >= 16)
+    {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb), [&](const tbb::blocked_range<std::size_t>& range) {
+        std::unique_ptr<Topology_step<Energy> >& local = m_thread_topology.local();
+        if(!local) local.reset(new Topology_step<Energy>(m_cm, m_energy, m_weight));
+        for(std::size_t i = range.begin(); i != range.end(); ++i)
+          local->boundary_splits(boundary[i].second, per_vertex[i]);
+      });
+    }
+    else
+#endif
+    for(std::size_t i = 0; i < nb; ++i) m_topology.boundary_splits(boundary[i].second, per_vertex[i]);
+    for(const std::vector<Operation>& v : per_vertex) ops.insert(ops.end(), v.begin(), v.end());
     m_topology.merges(ops);
     bool profitable = false;
     for(const Operation& op : ops) profitable = profitable || op.weighted(m_lambda) < 0;
@@ -350,6 +373,9 @@ private:
   double m_lambda;
   std::size_t m_operations = 0;
   bool m_cancelled = false;
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<std::unique_ptr<Topology_step<Energy> > > m_thread_topology;
+#endif
   std::vector<int> m_tips;
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;
