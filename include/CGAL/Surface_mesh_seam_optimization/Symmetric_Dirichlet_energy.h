@@ -26,6 +26,7 @@ namespace Surface_mesh_seam_optimization {
 ///
 /// \cgalModels `DistortionEnergy`
 class Symmetric_Dirichlet_energy
+  : public internal::Isotropic_energy<Symmetric_Dirichlet_energy>
 {
 public:
   /// \f$\psi(J)\f$, or \f$+\infty\f$ if \f$\det(J) \le 0\f$.
@@ -37,32 +38,8 @@ public:
     return J.squaredNorm() * (1 + 1 / (det * det));
   }
 
-  /// Returns \f$\psi(J)\f$ and writes \f$\partial\psi/\partial J\f$ into `dJ`
-  /// (set to zero when the value is \f$+\infty\f$).
-  double value_and_gradient(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ) const
-  {
-    const double psi = value(J);
-    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); return psi; }
-    const internal::Signed_svd_2 svd(J);
-    internal::isotropic_gradient(svd, derivatives(svd.s1, svd.s2), dJ);
-    return psi;
-  }
-
-  /// Returns \f$\psi(J)\f$, writes \f$\partial\psi/\partial J\f$ into `dJ` and
-  /// the 4x4 Hessian with respect to vec(J) = (J00, J10, J01, J11) into `H`.
-  /// With `project`, negative eigenvalues of `H` are set to 0 (analytic
-  /// eigensystem). `dJ` and `H` are set to zero when the value is \f$+\infty\f$.
-  double value_gradient_and_hessian(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ,
-                                    Eigen::Matrix4d& H, bool project = true) const
-  {
-    const double psi = value(J);
-    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); H.setZero(); return psi; }
-    const internal::Signed_svd_2 svd(J);
-    const internal::Isotropic_derivatives_2 d = derivatives(svd.s1, svd.s2);
-    internal::isotropic_gradient(svd, d, dJ);
-    internal::isotropic_hessian(svd, d, project, H);
-    return psi;
-  }
+  // value_and_gradient() and value_gradient_and_hessian(J, dJ, H, project)
+  // come from internal::Isotropic_energy (analytic eigensystem).
 
   /// Value at every rotation, the global minimum.
   static constexpr double minimum_value() { return 4.0; }

@@ -180,6 +180,35 @@ inline void isotropic_hessian(const Signed_svd_2& svd, const Isotropic_derivativ
       H(i, j) = H(j, i) = c0[i] * b0[j] + c1[i] * b1[j] + c2[i] * b2[j] + c3[i] * b3[j];
 }
 
+// The gradient and (projected) Hessian of an isotropic energy from its
+// value(J) and its derivatives(s1, s2) with respect to the singular values:
+// the part every model of DistortionEnergy here shares.
+template <typename Derived>
+class Isotropic_energy
+{
+public:
+  double value_and_gradient(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ) const
+  {
+    const double psi = static_cast<const Derived&>(*this).value(J);
+    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); return psi; }
+    const Signed_svd_2 svd(J);
+    isotropic_gradient(svd, Derived::derivatives(svd.s1, svd.s2), dJ);
+    return psi;
+  }
+
+  double value_gradient_and_hessian(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ,
+                                    Eigen::Matrix4d& H, bool project = true) const
+  {
+    const double psi = static_cast<const Derived&>(*this).value(J);
+    if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); H.setZero(); return psi; }
+    const Signed_svd_2 svd(J);
+    const Isotropic_derivatives_2 d = Derived::derivatives(svd.s1, svd.s2);
+    isotropic_gradient(svd, d, dJ);
+    isotropic_hessian(svd, d, project, H);
+    return psi;
+  }
+};
+
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL
