@@ -211,7 +211,8 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
   internal::measure_result(cm, result);
-  result.bound_met = true;
+  // no bound is enforced here; say whether the result meets the one given (default 4.1)
+  result.bound_met = result.distortion <= choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1);
   result.seconds = timer.time();
   return result;
 }
