@@ -29,6 +29,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -286,6 +287,69 @@ BOOST_AUTO_TEST_CASE(closed_genus_0_gets_a_two_edge_slit)
 
   BOOST_TEST_MESSAGE("sphere: slit length " << slit_length << " (shortest edge " << shortest_edge
                      << "), smallest UV triangle area " << s.min_area);
+}
+
+BOOST_AUTO_TEST_CASE(closed_genus_0_with_protrusions_gets_a_path_slit)
+{
+  // The octopus is closed, genus 0, with eight long tentacles: Tutte's map of
+  // the two-edge slit squeezes the tentacle tips to zero area in double
+  // precision; the retry slits it along a shortest path between two
+  // approximately farthest vertices.
+  Surface_mesh m = load<Surface_mesh>(test_data_dir + "/octopus_mainComp_f6000.obj");
+  BOOST_REQUIRE(CGAL::is_closed(m));
+  Maps<Surface_mesh> maps(m);
+  BOOST_REQUIRE_EQUAL(SMSO::compute_initial_parameterization(m, maps.seam, maps.uv), SMSO::OK);
+
+  BOOST_CHECK_EQUAL(number_of_charts(m, maps.seam), 1u);
+  const UV_stats s = uv_stats(m, maps.uv);
+  BOOST_CHECK_EQUAL(s.non_finite, 0u);
+  BOOST_CHECK_EQUAL(s.flipped, 0u); // signed area > 0 everywhere: none flipped or degenerate
+  BOOST_CHECK_GT(s.min_area, 0.);
+  const double a3 = area_3d(m);
+  BOOST_CHECK_LT(std::abs(s.total_area - a3) / a3, 1e-9);
+
+  // The slit is a simple path: seam degree 2 at its interior vertices, 1 at its two ends, connected.
+  std::vector<Surface_mesh::Edge_index> seams;
+  for(auto e : edges(m)) if(get(maps.seam, e)) seams.push_back(e);
+  BOOST_REQUIRE_GT(seams.size(), 2u);
+  std::map<Surface_mesh::Vertex_index, int> degree;
+  for(auto e : seams) { ++degree[source(e, m)]; ++degree[target(e, m)]; }
+  std::vector<Surface_mesh::Vertex_index> ends;
+  std::size_t interior = 0;
+  for(const auto& vd : degree)
+  {
+    if(vd.second == 1) ends.push_back(vd.first);
+    else if(vd.second == 2) ++interior;
+  }
+  BOOST_CHECK_EQUAL(ends.size(), 2u);
+  BOOST_CHECK_EQUAL(interior, degree.size() - 2);
+  BOOST_CHECK_EQUAL(degree.size(), seams.size() + 1); // a tree: connected and no cycle
+  if(ends.size() == 2)
+  {
+    // walk from one end along the seams: it reaches the other end through every seam edge
+    std::set<Surface_mesh::Edge_index> walked;
+    Surface_mesh::Vertex_index v = ends[0];
+    for(bool moved = true; moved; )
+    {
+      moved = false;
+      for(auto h : CGAL::halfedges_around_source(v, m))
+        if(get(maps.seam, edge(h, m)) && walked.insert(edge(h, m)).second)
+        {
+          v = target(h, m);
+          moved = true;
+          break;
+        }
+    }
+    BOOST_CHECK(v == ends[1]);
+    BOOST_CHECK_EQUAL(walked.size(), seams.size());
+  }
+  // The UVs differ across exactly those edges.
+  BOOST_CHECK(uv_discontinuities(m, maps.uv) == seam_edges(m, maps.seam));
+
+  double slit_length = 0;
+  for(auto e : seams) slit_length += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
+  BOOST_TEST_MESSAGE("octopus: path slit of " << seams.size() << " edges, length " << slit_length
+                     << " (3D area " << a3 << "), smallest UV triangle area " << s.min_area);
 }
 
 BOOST_AUTO_TEST_CASE(two_components_are_laid_out_apart)

@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -27,8 +28,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <numeric>
+#include <queue>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -95,6 +99,59 @@ protected:
   }
 };
 
+// Floater's mean value coordinates (positive weights: with a convex border the
+// map is an embedding, like Tutte's, but it follows the 3D geometry), measured
+// with the user's vertex point map (the stock one reads the mesh's own).
+template <class SeamMesh, class VertexPointMap, class BorderParameterizer>
+class Mean_value_coordinates_with_point_map
+  : public CGAL::Surface_mesh_parameterization::Mean_value_coordinates_parameterizer_3<SeamMesh, BorderParameterizer>
+{
+  typedef CGAL::Surface_mesh_parameterization::Mean_value_coordinates_parameterizer_3<SeamMesh, BorderParameterizer> Base;
+  typedef typename CGAL::Surface_mesh_parameterization::internal::Kernel_traits<SeamMesh>::Kernel::FT NT;
+  typedef typename boost::graph_traits<SeamMesh>::vertex_descriptor           vertex_descriptor;
+  typedef typename SeamMesh::TM_halfedge_descriptor                           TM_halfedge_descriptor;
+  typedef std::array<double, 3>                                               XYZ;
+
+  VertexPointMap m_vpm;
+
+  XYZ point(const SeamMesh& mesh, vertex_descriptor v) const
+  {
+    const TM_halfedge_descriptor h = v;
+    const auto& p = get(m_vpm, target(h, mesh.mesh()));
+    return {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
+  }
+
+  // tan(a / 2) for the angle a between u and w: |u x w| / (|u| |w| + u . w)
+  static double tan_half_angle(const XYZ& u, const XYZ& w)
+  {
+    const XYZ n = {{ u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] }};
+    const double cross = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    const double lu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    const double lw = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    return cross / (lu * lw + u[0] * w[0] + u[1] * w[1] + u[2] * w[2]);
+  }
+
+public:
+  Mean_value_coordinates_with_point_map(VertexPointMap vpm, BorderParameterizer border)
+    : Base(border), m_vpm(vpm) { }
+
+protected:
+  virtual NT compute_w_ij(const SeamMesh& mesh,
+                          vertex_descriptor v_i,
+                          CGAL::Vertex_around_target_circulator<SeamMesh> v_j) const override
+  {
+    CGAL::Vertex_around_target_circulator<SeamMesh> v_k = v_j, v_l = v_j;
+    --v_k;
+    ++v_l;
+    const XYZ pi = point(mesh, v_i), pj = point(mesh, *v_j), pk = point(mesh, *v_k), pl = point(mesh, *v_l);
+    const XYZ eij = {{ pj[0] - pi[0], pj[1] - pi[1], pj[2] - pi[2] }};
+    const XYZ eik = {{ pk[0] - pi[0], pk[1] - pi[1], pk[2] - pi[2] }};
+    const XYZ eil = {{ pl[0] - pi[0], pl[1] - pi[1], pl[2] - pi[2] }};
+    const double r = std::sqrt(eij[0] * eij[0] + eij[1] * eij[1] + eij[2] * eij[2]);
+    return NT((tan_half_angle(eij, eik) + tan_half_angle(eij, eil)) / r);
+  }
+};
+
 inline double signed_area_2(const std::array<double, 2>& a,
                             const std::array<double, 2>& b,
                             const std::array<double, 2>& c)
@@ -114,11 +171,18 @@ inline double signed_area_2(const std::array<double, 2>& a,
 /// embedding (uniform weights), with CGAL's
 /// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
 /// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
-/// triangle. A closed genus-0 chart is first cut by a slit of two edges
-/// sharing a vertex (the shortest such pair whose edges are not on one
-/// triangle); those edges are set in `seam_map`. Every chart is then scaled so
-/// that its UV area equals its 3D area (the optimizer works at the 3D scale),
-/// and the charts are laid out on a grid, with gaps, so that no two overlap.
+/// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
+/// of two edges sharing a vertex (the shortest such pair whose edges are not on
+/// one triangle). On a surface with long protrusions (an octopus' tentacles),
+/// Tutte's map of that slit squeezes the protrusions until triangles have zero
+/// area in double precision: the chart is then slit along a shortest path
+/// (Dijkstra on the 3D edge lengths) between two approximately farthest
+/// vertices instead, and if that map still has a flipped or degenerate
+/// triangle, mapped with Floater's mean value coordinates on the same path. A
+/// disk whose Tutte map fails also gets mean value coordinates. The slit edges
+/// are set in `seam_map`. Every chart is then scaled so that its UV area equals
+/// its 3D area (the optimizer works at the 3D scale), and the charts are laid
+/// out on a grid, with gaps, so that no two overlap.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex
 ///         point map (required by `Surface_mesh_parameterization`)
@@ -138,8 +202,8 @@ inline double signed_area_2(const std::array<double, 2>& a,
 /// area below 1e-12 times the longest edge squared), `ERROR_NON_MANIFOLD_MESH`
 /// (a vertex whose faces form several fans), `ERROR_NOT_A_DISK` (a chart of
 /// higher genus or with several boundary loops: cut it to a disk first),
-/// `ERROR_INITIAL_PARAMETERIZATION` (CGAL's parameterizer failed or gave a
-/// flipped triangle). On any error neither `uvmap` nor `seam_map` is modified.
+/// `ERROR_INITIAL_PARAMETERIZATION` (CGAL's parameterizers failed or gave a
+/// flipped or zero-area triangle with every slit and weighting tried). On any error neither `uvmap` nor `seam_map` is modified.
 template <class TriangleMesh, class EdgeSeamMap, class UVMap,
           class NamedParameters = parameters::Default_named_parameters>
 Error_code compute_initial_parameterization(const TriangleMesh& tm,
@@ -305,18 +369,39 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     }
   }
 
+  // ---- faces of each chart, in face order
+  std::vector<int> chart_face_start(n_charts + 1, 0), chart_faces(nf);
+  for(int f = 0; f < nf; ++f) ++chart_face_start[chart_of_face[f] + 1];
+  for(int k = 0; k < n_charts; ++k) chart_face_start[k + 1] += chart_face_start[k];
+  {
+    std::vector<int> fill(chart_face_start.begin(), chart_face_start.end() - 1);
+    for(int f = 0; f < nf; ++f) chart_faces[fill[chart_of_face[f]]++] = f;
+  }
+
   // ---- closed genus-0 charts get a slit; anything else but a disk is refused
-  std::vector<char> slit(nc, 0); // corner sides cut by a new slit
-  std::vector<edge_descriptor> slit_edges;
+  std::vector<char> closed(n_charts, 0);
   for(int k = 0; k < n_charts; ++k)
   {
     if(loops[k] == 1 && chi[k] == 1)
       continue;
     if(!(loops[k] == 0 && chi[k] == 2))
       return ERROR_NOT_A_DISK;
+    closed[k] = 1;
+  }
 
-    // Shortest pair of edges at one vertex not on a common triangle (consecutive
-    // in the ring); a tetrahedron-like ring has none, then any pair will do.
+  auto side_length = [&](int c) -> double
+  {
+    const XYZ& p = P[cv[c]];
+    const XYZ& q = P[cv[prev_c(c)]];
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                     (p[2] - q[2]) * (p[2] - q[2]));
+  };
+
+  // The first choice: the shortest pair of edges at one vertex not on a common
+  // triangle (consecutive in the ring); a tetrahedron-like ring has none, then
+  // any pair will do. Returns one corner side per edge.
+  auto two_edge_slit = [&](int k) -> std::vector<int>
+  {
     double best = std::numeric_limits<double>::infinity();
     int best_a = -1, best_b = -1;
     for(int pass = 0; pass < 2 && best_a < 0; ++pass)
@@ -333,12 +418,7 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
         const std::size_t d = ring.size();
         std::vector<double> len(d);
         for(std::size_t i = 0; i < d; ++i)
-        {
-          const XYZ& p = P[cv[ring[i]]];
-          const XYZ& q = P[cv[prev_c(ring[i])]];
-          len[i] = std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                             (p[2] - q[2]) * (p[2] - q[2]));
-        }
+          len[i] = side_length(ring[i]);
         for(std::size_t i = 0; i < d; ++i)
           for(std::size_t j = i + 1; j < d; ++j)
           {
@@ -354,15 +434,111 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
       }
     }
     if(best_a < 0)
-      return ERROR_INITIAL_PARAMETERIZATION;
-    for(int s : { best_a, best_b })
-    {
-      slit[s] = slit[copp[s]] = 1;
-      slit_edges.push_back(edge(H[s], tm));
-    }
-  }
+      return std::vector<int>();
+    return std::vector<int>{ best_a, best_b };
+  };
 
-  // ---- Tutte on a Seam_mesh of the charts
+  // The fallbacks: shortest paths on the 3D edge lengths (Dijkstra). A closed
+  // chart is a whole connected component, so the search stays in it.
+  // H[c] runs from cv[prev_c(c)] to cv[c].
+  std::vector<int> out_start, out_side;
+  std::vector<double> dist;
+  std::vector<int> pred; // the side by which a vertex was reached, -1 at the sources
+  auto dijkstra = [&](const std::vector<int>& sources)
+  {
+    if(out_start.empty())
+    {
+      out_start.assign(nv + 1, 0);
+      out_side.resize(nc);
+      for(int c = 0; c < nc; ++c) ++out_start[cv[prev_c(c)] + 1];
+      for(std::size_t v = 0; v < nv; ++v) out_start[v + 1] += out_start[v];
+      std::vector<int> fill(out_start.begin(), out_start.end() - 1);
+      for(int c = 0; c < nc; ++c) out_side[fill[cv[prev_c(c)]]++] = c;
+    }
+    dist.assign(nv, std::numeric_limits<double>::infinity());
+    pred.assign(nv, -1);
+    typedef std::pair<double, int> Item; // ties are broken by the vertex index: deterministic
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+    for(int s : sources)
+    {
+      dist[s] = 0;
+      queue.push(Item(0., s));
+    }
+    while(!queue.empty())
+    {
+      const Item top = queue.top();
+      queue.pop();
+      const int u = top.second;
+      if(top.first > dist[u]) continue;
+      for(int i = out_start[u]; i < out_start[u + 1]; ++i)
+      {
+        const int c = out_side[i];
+        const double d = top.first + side_length(c);
+        if(d < dist[cv[c]])
+        {
+          dist[cv[c]] = d;
+          pred[cv[c]] = c;
+          queue.push(Item(d, cv[c]));
+        }
+      }
+    }
+  };
+  auto chart_vertices = [&](int k) -> std::vector<int>
+  {
+    std::vector<int> vs;
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      for(int j = 0; j < 3; ++j) vs.push_back(cv[3 * chart_faces[i] + j]);
+    std::sort(vs.begin(), vs.end());
+    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+    return vs;
+  };
+  auto farthest = [&](const std::vector<int>& vs) -> int
+  {
+    int best = vs.front();
+    for(int v : vs)
+      if(dist[v] > dist[best]) best = v;
+    return best;
+  };
+  // A shortest path between two approximately farthest vertices (double
+  // sweep: the farthest vertex b from the farthest vertex a from an arbitrary
+  // one): a simple path, so the slit chart is a disk.
+  auto path_slit = [&](int k) -> std::vector<int>
+  {
+    const std::vector<int> vs = chart_vertices(k);
+    dijkstra(std::vector<int>(1, cv[3 * first_face[k]]));
+    const int a = farthest(vs);
+    dijkstra(std::vector<int>(1, a));
+    std::vector<int> sides;
+    for(int v = farthest(vs); pred[v] >= 0; v = cv[prev_c(pred[v])])
+      sides.push_back(pred[v]);
+    if(sides.size() < 2) // a single edge is no slit a circle can be put on
+      sides.clear();
+    return sides;
+  };
+
+  // Attempts, in order, until the chart's map has no flipped or degenerate triangle:
+  // closed charts: two-edge slit + Tutte, path + Tutte, path + mean value coordinates;
+  // disks: Tutte, mean value coordinates.
+  auto n_attempts = [&](int k) { return closed[k] ? 3 : 2; };
+  auto uses_mean_value = [&](int k, int a) { return closed[k] ? a == 2 : a == 1; };
+  std::vector<int> attempt(n_charts, 0);
+  std::vector<std::vector<int> > slit_sides(n_charts);
+  // Sets the slit of attempt[k], skipping attempts whose slit does not exist.
+  auto prepare = [&](int k) -> bool
+  {
+    for(; attempt[k] < n_attempts(k); ++attempt[k])
+    {
+      if(!closed[k]) return true;
+      if(attempt[k] == 0) slit_sides[k] = two_edge_slit(k);
+      else if(attempt[k] == 1) slit_sides[k] = path_slit(k);
+      else if(slit_sides[k].empty()) continue; // no path for mean value coordinates either
+      if(!slit_sides[k].empty()) return true;
+    }
+    return false;
+  };
+
+  // ---- Tutte (or mean value coordinates) on a Seam_mesh of the charts
+  std::vector<char> slit(nc, 0); // corner sides cut by a slit
   const auto is_cut_edge = [&](edge_descriptor e) -> bool
   {
     const int c = corner_of[get(himap, halfedge(e, tm))];
@@ -370,69 +546,103 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     const int s = c >= 0 ? c : c2;
     return s >= 0 && (cut[s] || slit[s]);
   };
-  Seam_mesh_maker<TriangleMesh> maker(
-    tm, boost::make_function_property_map<edge_descriptor, bool>(is_cut_edge));
-  typedef typename Seam_mesh_maker<TriangleMesh>::Seam_mesh Seam_mesh;
-  typedef typename SMP::internal::Kernel_traits<Seam_mesh>::Kernel::Point_2 SMP_point_2;
+  typedef Seam_mesh_maker<TriangleMesh>                                        Maker;
+  typedef typename Maker::Seam_mesh                                            Seam_mesh;
+  typedef typename SMP::internal::Kernel_traits<Seam_mesh>::Kernel::Point_2   SMP_point_2;
   typedef internal::Circular_border_arc_length_with_point_map<Seam_mesh, VPM>  Border;
-  typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>          Parameterizer;
+  typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>          Tutte;
+  typedef internal::Mean_value_coordinates_with_point_map<Seam_mesh, VPM, Border> Mean_value;
 
   std::vector<SMP_point_2> seam_uv_data(nh);
   const auto seam_uv = boost::make_iterator_property_map(seam_uv_data.begin(), himap);
-  Seam_mesh& smesh = maker.seam_mesh();
-  for(int k = 0; k < n_charts; ++k)
-  {
-    const auto bhd = maker.border_halfedge(face(H[3 * first_face[k]], tm));
-    if(bhd == typename boost::graph_traits<Seam_mesh>::halfedge_descriptor())
-      return ERROR_INITIAL_PARAMETERIZATION;
-    const SMP::Error_code status = SMP::parameterize(smesh, Parameterizer(Border(vpm)), bhd, seam_uv);
-    if(status != SMP::OK)
-      return ERROR_INITIAL_PARAMETERIZATION;
-  }
-
   std::vector<UV> uv(nc);
-  for(int c = 0; c < nc; ++c)
-  {
-    const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
-    uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
-    if(!std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1]))
-      return ERROR_INITIAL_PARAMETERIZATION;
-  }
+  std::vector<UV> lo(n_charts), hi(n_charts);
 
-  // ---- orientation, scale to the 3D area, layout
-  std::vector<double> area_uv(n_charts, 0), area_3d(n_charts, 0);
-  for(int f = 0; f < nf; ++f)
+  // Reads chart k back from the seam mesh, mirrors it if needed (the circle is
+  // walked along the border loop) so that faces keep their 3D orientation,
+  // scales it so that its UV area equals its 3D area, and checks that every
+  // triangle has a positive area.
+  auto accept_chart = [&](Seam_mesh& smesh, int k) -> bool
   {
-    area_uv[chart_of_face[f]] += internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]);
-    area_3d[chart_of_face[f]] += area3[f];
-  }
-  // The circle is walked along the border loop, which may give a mirrored
-  // chart: mirror it back so that faces keep their 3D orientation.
-  std::vector<double> sx(n_charts), sy(n_charts);
-  for(int k = 0; k < n_charts; ++k)
-  {
-    if(!(area_uv[k] != 0) || !std::isfinite(area_uv[k]))
-      return ERROR_INITIAL_PARAMETERIZATION;
-    const double s = std::sqrt(area_3d[k] / std::abs(area_uv[k]));
-    sx[k] = area_uv[k] < 0 ? -s : s;
-    sy[k] = s;
-  }
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<UV> lo(n_charts, UV{{ inf, inf }}), hi(n_charts, UV{{ -inf, -inf }});
-  for(int c = 0; c < nc; ++c)
-  {
-    const int k = chart_of_face[c / 3];
-    uv[c][0] *= sx[k];
-    uv[c][1] *= sy[k];
-    for(int i = 0; i < 2; ++i)
+    const double inf = std::numeric_limits<double>::infinity();
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+      {
+        const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
+        uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+        if(!std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1]))
+          return false;
+      }
+    double area_uv = 0, area_3d = 0;
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
     {
-      lo[k][i] = (std::min)(lo[k][i], uv[c][i]);
-      hi[k][i] = (std::max)(hi[k][i], uv[c][i]);
+      const int f = chart_faces[i];
+      area_uv += internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]);
+      area_3d += area3[f];
+    }
+    if(!(area_uv != 0) || !std::isfinite(area_uv))
+      return false;
+    const double s = std::sqrt(area_3d / std::abs(area_uv));
+    const double sx = area_uv < 0 ? -s : s, sy = s;
+    lo[k] = UV{{ inf, inf }};
+    hi[k] = UV{{ -inf, -inf }};
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+      {
+        uv[c][0] *= sx;
+        uv[c][1] *= sy;
+        for(int j = 0; j < 2; ++j)
+        {
+          lo[k][j] = (std::min)(lo[k][j], uv[c][j]);
+          hi[k][j] = (std::max)(hi[k][j], uv[c][j]);
+        }
+      }
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+    {
+      const int f = chart_faces[i];
+      if(!(internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]) > 0))
+        return false;
+    }
+    return true;
+  };
+
+  std::vector<char> pending(n_charts, 1);
+  for(int k = 0; k < n_charts; ++k)
+    if(!prepare(k))
+      return ERROR_INITIAL_PARAMETERIZATION;
+  for(bool any = true; any; )
+  {
+    std::fill(slit.begin(), slit.end(), 0);
+    for(int k = 0; k < n_charts; ++k)
+      for(int s : slit_sides[k])
+        slit[s] = slit[copp[s]] = 1;
+    Maker maker(tm, boost::make_function_property_map<edge_descriptor, bool>(is_cut_edge));
+    Seam_mesh& smesh = maker.seam_mesh();
+    any = false;
+    for(int k = 0; k < n_charts; ++k)
+    {
+      if(!pending[k]) continue;
+      const auto bhd = maker.border_halfedge(face(H[3 * first_face[k]], tm));
+      if(bhd == typename boost::graph_traits<Seam_mesh>::halfedge_descriptor())
+        return ERROR_INITIAL_PARAMETERIZATION;
+      const SMP::Error_code status = uses_mean_value(k, attempt[k])
+        ? SMP::parameterize(smesh, Mean_value(vpm, Border(vpm)), bhd, seam_uv)
+        : SMP::parameterize(smesh, Tutte(Border(vpm)), bhd, seam_uv);
+      if(status == SMP::OK && accept_chart(smesh, k))
+      {
+        pending[k] = 0;
+        continue;
+      }
+      ++attempt[k];
+      if(!prepare(k))
+        return ERROR_INITIAL_PARAMETERIZATION;
+      any = true;
     }
   }
-  for(int f = 0; f < nf; ++f)
-    if(!(internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]) > 0))
-      return ERROR_INITIAL_PARAMETERIZATION;
+  std::vector<edge_descriptor> slit_edges;
+  for(int k = 0; k < n_charts; ++k)
+    for(int s : slit_sides[k])
+      slit_edges.push_back(edge(H[s], tm));
 
   // Grid of charts in face order; a column is as wide as its widest chart.
   const int n_cols = static_cast<int>(std::ceil(std::sqrt(double(n_charts))));
