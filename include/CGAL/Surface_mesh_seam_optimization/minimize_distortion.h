@@ -112,7 +112,8 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///   `target(h)` in `face(h)`.
 ///
 /// \param tm the mesh; it must be a topological disk, a closed genus-0
-///   surface (then cut by a two-edge slit), or cut into such charts by the
+///   surface (then slit open: two edges at one vertex, or a shortest path
+///   between two far vertices when that map degenerates), or cut into such charts by the
 ///   seams of `edge_is_seam_map`; with `use_uv_map_as_initial`, any charts.
 /// \param uvmap receives the result; read as the initial map with `use_uv_map_as_initial(true)`
 /// \param np optional named parameters:
