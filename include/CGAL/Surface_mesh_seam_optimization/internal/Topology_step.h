@@ -181,9 +181,6 @@ private:
     m_ids.push_back(op.uv_a);
     m_stencil.add_vertex(0, 0);
     m_stencil.n_free = 1;
-    // "before" energy with the two copies at their own positions
-    Local_stencil before_stencil;
-    std::vector<int> before_ids;
     for(int k = m_vc.offset[v]; k < m_vc.offset[v + 1]; ++k)
     {
       const int c = m_vc.corners[k];
@@ -202,8 +199,7 @@ private:
     const double* pb = &m_cm.uv[2*op.uv_b];
     double before = 0;
     {
-      // energy of the same faces with the copies where they are
-      std::vector<double> pos = m_stencil.pos;
+      // energy of the same faces with the two copies where they are
       Local_stencil s = m_stencil;
       s.pos.push_back(pb[0]); s.pos.push_back(pb[1]);
       const int lb = int(s.pos.size() / 2) - 1;
@@ -212,7 +208,6 @@ private:
         for(int j = 0; j < 3; ++j)
           if(s.local[3*i + j] == 0 && m_cm.corner_uv[3*s.faces[i] + j] == op.uv_b) s.local[3*i + j] = lb;
       before = stencil_energy(m_cm, m_energy, s, s.pos.data());
-      (void)pos;
     }
     static const double ts[] = { 0.5, 0.25, 0.75, 0., 1. };
     double start = std::numeric_limits<double>::infinity();
