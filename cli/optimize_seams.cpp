@@ -103,6 +103,7 @@ struct Options
   double seam_weight = 0;
   bool has_max_iterations = false;
   std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
+  bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
 
   Mode mode() const
   {
@@ -135,6 +136,9 @@ void print_help(std::ostream& os)
      << "Options:\n"
      << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
      << "                          \"_uv.obj\", in the current directory)\n"
+     << "  --normalize             write the UVs scaled uniformly (one factor for all charts)\n"
+     << "                          and translated into [0,1]^2; the report's e_sd is that of\n"
+     << "                          the unnormalized map (default: off)\n"
      << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
      << "                          as found while E_SD <= B (default: " << default_distortion_bound
      << ")\n"
@@ -267,6 +271,12 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         return Parse_status::ERROR;
       options.keep_seams = true;
     }
+    else if(name == "--normalize")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.normalize = true;
+    }
     else if(name == "--quiet")
     {
       if(!no_value())
@@ -352,6 +362,7 @@ struct Run_report
   double distortion_bound = default_distortion_bound;   // bound mode only
   double seam_weight = 0;                               // seam-weight mode only
   std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
+  bool normalized = false;                              // --normalize applied to the written UVs
   std::string input, output;
   std::size_t faces = 0, vertices = 0;
   double seconds = 0;                    // the optimization call
@@ -446,6 +457,7 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("charts", std::to_string(res.charts));
   fields.emplace_back("iterations", std::to_string(res.iterations));
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
+  fields.emplace_back("normalized", r.normalized ? "true" : "false");
   fields.emplace_back("bijective", "false");   // no scaffold yet, whatever --no-bijectivity says
   {
     std::string notes = "[";
@@ -798,6 +810,35 @@ private:
   int m_width = 0;   // of the longest line written on the current terminal line
 };
 
+// --normalize: one scale factor for all charts and a translation, so that the
+// UVs fill [0,1]^2 along their longer extent (the other starts at 0).
+template <typename UVMap>
+void normalize_uv_map(const Mesh& mesh, UVMap uvmap)
+{
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for(halfedge_descriptor h : halfedges(mesh))
+  {
+    if(is_border(h, mesh))
+      continue;
+    const Point_2 p = get(uvmap, h);
+    lo[0] = std::min(lo[0], p.x()); hi[0] = std::max(hi[0], p.x());
+    lo[1] = std::min(lo[1], p.y()); hi[1] = std::max(hi[1], p.y());
+  }
+  const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  if(!(extent > 0) || !std::isfinite(extent))
+    return;
+  auto unit = [](double x) { return std::min(1., std::max(0., x)); };
+  for(halfedge_descriptor h : halfedges(mesh))
+  {
+    if(is_border(h, mesh))
+      continue;
+    const Point_2 p = get(uvmap, h);
+    // The extreme corners land exactly on 0 and 1 (x - lo is exact there).
+    put(uvmap, h, Point_2(unit((p.x() - lo[0]) / extent), unit((p.y() - lo[1]) / extent)));
+  }
+}
+
 // Writes the report if one was asked for; a failure to do so is an error only
 // when nothing else failed (one error line per run).
 int finish(const Options& options, Run_report& report, std::chrono::steady_clock::time_point t0,
@@ -889,6 +930,12 @@ int run(const Options& options)
       line += ": " + res.message;
     print_error(line);
     return finish(options, report, t0, EXIT_RUN_FAILED);
+  }
+
+  if(options.normalize)
+  {
+    normalize_uv_map(mesh, uvmap);
+    report.normalized = true;
   }
 
   report.output = options.output.empty()
