@@ -104,6 +104,7 @@ struct Options
   bool has_max_iterations = false;
   std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
+  bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
 
   Mode mode() const
   {
@@ -136,6 +137,10 @@ void print_help(std::ostream& os)
      << "Options:\n"
      << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
      << "                          \"_uv.obj\", in the current directory)\n"
+     << "  --use-input-uv          start from the input's own UV map (an OBJ with a vt for\n"
+     << "                          every face corner, no flipped triangle) instead of\n"
+     << "                          computing one; its seams are those of the map\n"
+     << "                          (default: off)\n"
      << "  --normalize             write the UVs scaled uniformly (one factor for all charts)\n"
      << "                          and translated into [0,1]^2; the report's e_sd is that of\n"
      << "                          the unnormalized map (default: off)\n"
@@ -270,6 +275,12 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
       if(!no_value())
         return Parse_status::ERROR;
       options.keep_seams = true;
+    }
+    else if(name == "--use-input-uv")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.use_input_uv = true;
     }
     else if(name == "--normalize")
     {
@@ -713,6 +724,58 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
   return true;
 }
 
+// --use-input-uv: reads an OBJ with its per-corner UVs into the empty `mesh`
+// and `uvmap`. Returns true on success; otherwise `failure` says why.
+template <typename UVMap>
+bool load_mesh_with_uv_map(const std::string& path, Mesh& mesh, UVMap uvmap, Load_failure& failure)
+{
+  std::error_code ec;
+  if(!std::filesystem::is_regular_file(path, ec))
+  {
+    failure = {"ERROR_INPUT", "cannot open input '" + path + "': " +
+                              (std::filesystem::exists(path, ec) ? "not a regular file"
+                                                                 : "No such file or directory")};
+    return false;
+  }
+  if(lowercase_extension(path) != ".obj")
+  {
+    failure = {"ERROR_INPUT", "option '--use-input-uv' needs an .obj input with texture coordinates, not '" +
+                              path + "'"};
+    return false;
+  }
+  std::string error;
+  bool ok = false;
+  try
+  {
+    ok = SMSO::IO::read_OBJ_with_uv_map(path, mesh, uvmap, error);
+  }
+  catch(const std::exception& e)
+  {
+    error = e.what();
+  }
+  if(!ok)
+  {
+    failure = {"ERROR_INPUT", "--use-input-uv: cannot read a UV map: " + error};
+    return false;
+  }
+  return true;
+}
+
+// Seams of a per-corner UV map: the edges whose two sides disagree on a UV.
+template <typename UVMap, typename SeamMap>
+void seams_from_uv_map(const Mesh& mesh, UVMap uvmap, SeamMap seams)
+{
+  for(edge_descriptor e : edges(mesh))
+  {
+    const halfedge_descriptor h = halfedge(e, mesh), o = opposite(h, mesh);
+    if(is_border(h, mesh) || is_border(o, mesh))
+      continue;
+    // get(uvmap, h) is the UV of target(h) in face(h); prev(o) also ends at target(h).
+    put(seams, e, get(uvmap, h) != get(uvmap, prev(o, mesh)) ||
+                  get(uvmap, prev(h, mesh)) != get(uvmap, o));
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Run
 
@@ -874,8 +937,17 @@ int run(const Options& options)
     notes.push_back(bijectivity_note);
 
   Mesh mesh;
+  Mesh::Property_map<halfedge_descriptor, Point_2> uvmap;
   Load_failure failure;
-  if(!load_mesh(options.input, mesh, notes, failure))
+  bool loaded = false;
+  if(options.use_input_uv)
+  {
+    uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
+    loaded = load_mesh_with_uv_map(options.input, mesh, uvmap, failure);
+  }
+  else
+    loaded = load_mesh(options.input, mesh, notes, failure);
+  if(!loaded)
   {
     report.status = failure.status;
     report.message = failure.line;
@@ -888,15 +960,19 @@ int run(const Options& options)
   report.faces = num_faces(mesh);
   report.vertices = num_vertices(mesh);
 
-  auto uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
+  if(!options.use_input_uv)
+    uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
   auto seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
+  if(options.use_input_uv)
+    seams_from_uv_map(mesh, uvmap, seams);
 
   // Packs are joined from the right, one parameter at a time: in the
   // package's parameters.h, combine() of a pack of three or more parameters
   // with another silently drops some of them (a lookup inside append()).
   namespace NP = SMSO::parameters;
-  const auto common = NP::combine(NP::edge_is_seam_map(seams),
-                                  NP::maximum_number_of_iterations(options.iteration_cap()));
+  const auto common = NP::combine(
+    NP::use_uv_map_as_initial(options.use_input_uv),
+    NP::combine(NP::edge_is_seam_map(seams), NP::maximum_number_of_iterations(options.iteration_cap())));
   Progress_printer progress(!options.quiet);
   const auto with_visitor = NP::combine(
     NP::bijective(!options.no_bijectivity),
