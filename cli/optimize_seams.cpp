@@ -105,6 +105,7 @@ struct Options
   std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
+  double time_limit = 0;                  // seconds; 0: none
 
   Mode mode() const
   {
@@ -160,6 +161,9 @@ void print_help(std::ostream& os)
      << "  --max-iterations N      cap on Newton iterations (default: "
      << default_max_iterations_seams << ", or " << default_max_iterations_keep
      << " with --keep-seams)\n"
+     << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
+     << "                          write the best result so far (status WARNING_CANCELLED,\n"
+     << "                          exit 0); not with --keep-seams (default: none)\n"
      << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
      << "                          initial_e_sd, distortion_bound, bound_met, seam_weight,\n"
      << "                          lambda, seam_length, seam_length_normalized, charts,\n"
@@ -282,6 +286,17 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         return Parse_status::ERROR;
       options.use_input_uv = true;
     }
+    else if(name == "--time-limit")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.time_limit) || !(options.time_limit > 0.))
+      {
+        error = "option '--time-limit' needs a number of seconds > 0, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
     else if(name == "--normalize")
     {
       if(!no_value())
@@ -351,6 +366,11 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
   {
     error = std::string("option '--keep-seams' does not optimize seams: it takes no '") +
             (options.has_distortion_bound ? "--distortion-bound" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.keep_seams && options.time_limit > 0)
+  {
+    error = "option '--time-limit' is not supported with '--keep-seams' (that mode cannot be stopped early)";
     return Parse_status::ERROR;
   }
   if(options.input.empty())
@@ -807,10 +827,14 @@ void print_error(const std::string& line)
 class Progress_printer
 {
 public:
-  explicit Progress_printer(bool enabled)
+  // `time_limit` > 0: every call after that many seconds (from construction)
+  // cancels the run.
+  explicit Progress_printer(bool enabled, double time_limit = 0)
     : m_enabled(enabled), m_tty(enabled && ::isatty(STDERR_FILENO) == 1),
-      m_last(std::chrono::steady_clock::now())
+      m_last(std::chrono::steady_clock::now()), m_start(m_last), m_time_limit(time_limit)
   {}
+
+  bool time_limit_reached() const { return m_time_limit_reached; }
 
   bool on_iteration(const SMSO::Seam_optimization_progress& p) { return update(p); }
   bool on_topology_operation(const SMSO::Seam_optimization_progress& p) { return update(p); }
@@ -832,8 +856,10 @@ public:
 private:
   bool update(const SMSO::Seam_optimization_progress& p)
   {
+    if(m_time_limit > 0 && !m_time_limit_reached)
+      m_time_limit_reached = seconds_since(m_start) > m_time_limit;
     if(!m_enabled)
-      return true;
+      return !m_time_limit_reached;
     m_state = p;
     m_pending = true;
     const auto now = std::chrono::steady_clock::now();
@@ -842,7 +868,7 @@ private:
       m_last = now;
       print(p);
     }
-    return true;   // never cancels
+    return !m_time_limit_reached;   // cancels only past --time-limit
   }
 
   void print(const SMSO::Seam_optimization_progress& p)
@@ -868,6 +894,9 @@ private:
   bool m_enabled;
   bool m_tty;
   std::chrono::steady_clock::time_point m_last;
+  std::chrono::steady_clock::time_point m_start;
+  double m_time_limit;
+  bool m_time_limit_reached = false;
   SMSO::Seam_optimization_progress m_state;
   bool m_pending = false;
   int m_width = 0;   // of the longest line written on the current terminal line
@@ -973,7 +1002,7 @@ int run(const Options& options)
   const auto common = NP::combine(
     NP::use_uv_map_as_initial(options.use_input_uv),
     NP::combine(NP::edge_is_seam_map(seams), NP::maximum_number_of_iterations(options.iteration_cap())));
-  Progress_printer progress(!options.quiet);
+  Progress_printer progress(!options.quiet, options.time_limit);
   const auto with_visitor = NP::combine(
     NP::bijective(!options.no_bijectivity),
     NP::combine(CGAL::parameters::visitor(std::ref(progress)), common));
@@ -998,6 +1027,14 @@ int run(const Options& options)
   const SMSO::Optimization_result& res = report.result;
   report.status = status_name(res.status);
   report.message = res.message;
+  if(progress.time_limit_reached() && res.status == SMSO::WARNING_CANCELLED)
+  {
+    const std::string n = "time limit of " + format_double(options.time_limit, 6) +
+                          " s reached: stopped after " + std::to_string(res.iterations) +
+                          " iterations, the result is the best so far";
+    notes.push_back(n);
+    report.notes.push_back(n);
+  }
 
   if(!res.has_result())
   {
