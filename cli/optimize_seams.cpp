@@ -400,29 +400,6 @@ struct Run_report
   double total_seconds = 0;              // reading + optimization + writing
 };
 
-const char* status_name(SMSO::Error_code code)
-{
-  switch(code)
-  {
-    case SMSO::OK: return "OK";
-    case SMSO::WARNING_MAXIMUM_ITERATIONS: return "WARNING_MAXIMUM_ITERATIONS";
-    case SMSO::WARNING_CANCELLED: return "WARNING_CANCELLED";
-    case SMSO::WARNING_BOUND_NOT_MET: return "WARNING_BOUND_NOT_MET";
-    case SMSO::ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
-    case SMSO::ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
-    case SMSO::ERROR_NON_MANIFOLD_MESH: return "ERROR_NON_MANIFOLD_MESH";
-    case SMSO::ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
-    case SMSO::ERROR_DEGENERATE_TRIANGLE: return "ERROR_DEGENERATE_TRIANGLE";
-    case SMSO::ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
-    case SMSO::ERROR_INVALID_UV_MAP: return "ERROR_INVALID_UV_MAP";
-    case SMSO::ERROR_FLIPPED_UV_TRIANGLE: return "ERROR_FLIPPED_UV_TRIANGLE";
-    case SMSO::ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
-    case SMSO::ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
-    case SMSO::ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
-  }
-  return "ERROR_UNKNOWN";
-}
-
 void append_json_string(std::string& out, const std::string& s)
 {
   out += '"';
@@ -534,7 +511,7 @@ std::string lowercase_extension(const std::string& path)
 
 Load_failure code_failure(SMSO::Error_code code, const std::string& line)
 {
-  return Load_failure{status_name(code), line};
+  return Load_failure{SMSO::get_error_code_name(code), line};
 }
 
 // Reads a polygon soup (so that defects can be named, where read_polygon_mesh
@@ -1025,7 +1002,7 @@ int run(const Options& options)
   report.seconds = seconds_since(t_opt);
   progress.finish();
   const SMSO::Optimization_result& res = report.result;
-  report.status = status_name(res.status);
+  report.status = SMSO::get_error_code_name(res.status);
   report.message = res.message;
   if(progress.time_limit_reached() && res.status == SMSO::WARNING_CANCELLED)
   {

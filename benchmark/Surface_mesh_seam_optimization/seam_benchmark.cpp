@@ -35,29 +35,6 @@ typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
 namespace SMSO = CGAL::Surface_mesh_seam_optimization;
 namespace SMSO_np = CGAL::Surface_mesh_seam_optimization::parameters;
 
-static const char* status_name(SMSO::Error_code c)
-{
-  switch(c)
-  {
-    case SMSO::OK: return "OK";
-    case SMSO::WARNING_MAXIMUM_ITERATIONS: return "WARNING_MAXIMUM_ITERATIONS";
-    case SMSO::WARNING_CANCELLED: return "WARNING_CANCELLED";
-    case SMSO::WARNING_BOUND_NOT_MET: return "WARNING_BOUND_NOT_MET";
-    case SMSO::ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
-    case SMSO::ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
-    case SMSO::ERROR_NON_MANIFOLD_MESH: return "ERROR_NON_MANIFOLD_MESH";
-    case SMSO::ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
-    case SMSO::ERROR_DEGENERATE_TRIANGLE: return "ERROR_DEGENERATE_TRIANGLE";
-    case SMSO::ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
-    case SMSO::ERROR_INVALID_UV_MAP: return "ERROR_INVALID_UV_MAP";
-    case SMSO::ERROR_FLIPPED_UV_TRIANGLE: return "ERROR_FLIPPED_UV_TRIANGLE";
-    case SMSO::ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
-    case SMSO::ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
-    case SMSO::ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
-  }
-  return "ERROR_UNKNOWN";
-}
-
 static double peak_mb()
 {
   struct rusage ru;
@@ -110,7 +87,7 @@ static Row run(const std::string& file, double bound, std::size_t max_iterations
                                                   SMSO_np::maximum_number_of_iterations(max_iterations),
                                                   SMSO_np::edge_is_seam_map(seams)));
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  row.status = status_name(r.status);
+  row.status = SMSO::get_error_code_name(r.status);
   if(!r.has_result())
   {
     if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";

@@ -63,6 +63,30 @@ inline const char* get_error_message(Error_code code)
   return "Unknown error";
 }
 
+/// The enumerator's name, e.g. `"ERROR_NOT_A_DISK"` (for reports and logs).
+inline const char* get_error_code_name(Error_code code)
+{
+  switch(code)
+  {
+    case OK: return "OK";
+    case WARNING_MAXIMUM_ITERATIONS: return "WARNING_MAXIMUM_ITERATIONS";
+    case WARNING_CANCELLED: return "WARNING_CANCELLED";
+    case WARNING_BOUND_NOT_MET: return "WARNING_BOUND_NOT_MET";
+    case ERROR_EMPTY_MESH: return "ERROR_EMPTY_MESH";
+    case ERROR_NON_TRIANGULAR_MESH: return "ERROR_NON_TRIANGULAR_MESH";
+    case ERROR_NON_MANIFOLD_MESH: return "ERROR_NON_MANIFOLD_MESH";
+    case ERROR_NON_FINITE_COORDINATES: return "ERROR_NON_FINITE_COORDINATES";
+    case ERROR_DEGENERATE_TRIANGLE: return "ERROR_DEGENERATE_TRIANGLE";
+    case ERROR_NOT_A_DISK: return "ERROR_NOT_A_DISK";
+    case ERROR_INVALID_UV_MAP: return "ERROR_INVALID_UV_MAP";
+    case ERROR_FLIPPED_UV_TRIANGLE: return "ERROR_FLIPPED_UV_TRIANGLE";
+    case ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
+    case ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
+    case ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+  }
+  return "ERROR_UNKNOWN";
+}
+
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL
 
