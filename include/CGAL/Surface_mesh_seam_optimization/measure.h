@@ -58,10 +58,7 @@ Uv_map_measures measure_uv_map(const TriangleMesh& tm, UVMap uvmap,
   std::vector<char> seam;
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
   {
-    auto seam_map = get_parameter(np, internal_np::edge_is_seam_map);
-    seam.assign(cm.corner_vertex.size(), 0);
-    for(std::size_t h = 0; h < seam.size(); ++h)
-      seam[h] = cm.opposite[h] >= 0 && bool(get(seam_map, edge(copy.corner_halfedge[h], tm)));
+    internal::read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
   }
   else
     internal::seams_from_corner_uvs(cm, corner_uvs, seam);

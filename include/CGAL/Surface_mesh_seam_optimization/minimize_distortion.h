@@ -53,19 +53,15 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
   constexpr bool has_seam_map =
     !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value;
 
-  std::vector<char> seam(cm.corner_vertex.size(), 0);
+  std::vector<char> seam;
   std::vector<double> corner_uvs;
-  auto read_seams = [&](auto seam_map) {
-    for(std::size_t h = 0; h < seam.size(); ++h)
-      seam[h] = cm.opposite[h] >= 0 && bool(get(seam_map, edge(copy.corner_halfedge[h], tm)));
-  };
 
   if(use_input)
   {
     ec = read_uv_map(tm, uvmap, copy, corner_uvs, message);
     if(ec != OK) return ec;
     if constexpr(has_seam_map)
-      read_seams(get_parameter(np, internal_np::edge_is_seam_map));
+      read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
     else
       seams_from_corner_uvs(cm, corner_uvs, seam);
   }
@@ -81,7 +77,7 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
     ec = compute_initial_parameterization(tm, scratch_seams, scratch_uv,
                                           CGAL::parameters::vertex_point_map(vpm));
     if(ec != OK) { message = "could not compute the initial map"; return ec; }
-    read_seams(scratch_seams);
+    read_seam_map(tm, scratch_seams, copy, cm, seam);
     ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
     if(ec != OK) return ec;
   }

@@ -135,49 +135,6 @@ struct Cut_mesh
   double normalization_radius() const { return std::sqrt(total_area / 3.14159265358979323846); }
 };
 
-// A chart is a disk iff its Euler characteristic V - E + F is 1 and it has
-// exactly one boundary loop (UV vertices on two boundary stretches are pinched).
-inline bool all_charts_are_disks(const Cut_mesh& cm, std::size_t& bad_chart)
-{
-  std::vector<int> chart;
-  const std::size_t nc = cm.compute_charts(chart);
-  const std::size_t nuv = cm.number_of_uv_vertices();
-  std::vector<long> chi(nc, 0), loops(nc, 0);
-  std::vector<int> uv_chart(nuv, -1);
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
-    uv_chart[cm.corner_uv[c]] = chart[c / 3];
-  for(std::size_t u = 0; u < nuv; ++u)
-    if(uv_chart[u] >= 0) ++chi[uv_chart[u]];
-  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) ++chi[chart[f]];
-
-  std::vector<int> boundary_next(nuv, -1), boundary_count(nuv, 0);
-  for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
-  {
-    const int o = cm.opposite[h];
-    const bool chart_border = (o < 0 || cm.is_seam(int(h)));
-    if(chart_border || o > int(h)) --chi[chart[h / 3]]; // each UV edge once
-    if(chart_border)
-    {
-      const int to = cm.corner_uv[h];
-      boundary_next[to] = cm.corner_uv[Cut_mesh::prev(int(h))];
-      ++boundary_count[to];
-    }
-  }
-  for(std::size_t u = 0; u < nuv; ++u)
-    if(boundary_count[u] > 1) { bad_chart = std::size_t(uv_chart[u]); return false; }
-
-  std::vector<char> visited(nuv, 0);
-  for(std::size_t u = 0; u < nuv; ++u)
-  {
-    if(boundary_next[u] < 0 || visited[u]) continue;
-    ++loops[uv_chart[u]];
-    for(int w = int(u); w >= 0 && !visited[w]; w = boundary_next[w]) visited[w] = 1;
-  }
-  for(std::size_t c = 0; c < nc; ++c)
-    if(chi[c] != 1 || loops[c] != 1) { bad_chart = c; return false; }
-  return true;
-}
-
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL

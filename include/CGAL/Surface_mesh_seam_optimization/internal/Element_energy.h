@@ -32,18 +32,22 @@ struct Jacobian_coefficients
   }
 };
 
-// J of face f for the UV coordinates `uv` (indexed by UV vertex).
-inline void face_jacobian(const Cut_mesh& cm, std::size_t f, const double* uv, Eigen::Matrix2d& J)
+// J of the triangle (a, b, c) in UV with rest-frame inverse B (column-major).
+inline void triangle_jacobian(const double* a, const double* b, const double* c, const double* B,
+                              Eigen::Matrix2d& J)
 {
-  const double* a = uv + 2 * cm.corner_uv[3*f];
-  const double* b = uv + 2 * cm.corner_uv[3*f+1];
-  const double* c = uv + 2 * cm.corner_uv[3*f+2];
-  const double* B = &cm.rest_inverse[4*f];
   const double d1x = b[0]-a[0], d1y = b[1]-a[1], d2x = c[0]-a[0], d2y = c[1]-a[1];
   J(0,0) = d1x * B[0] + d2x * B[1];
   J(1,0) = d1y * B[0] + d2y * B[1];
   J(0,1) = d1x * B[2] + d2x * B[3];
   J(1,1) = d1y * B[2] + d2y * B[3];
+}
+
+// J of face f for the UV coordinates `uv` (indexed by UV vertex).
+inline void face_jacobian(const Cut_mesh& cm, std::size_t f, const double* uv, Eigen::Matrix2d& J)
+{
+  triangle_jacobian(uv + 2 * cm.corner_uv[3*f], uv + 2 * cm.corner_uv[3*f+1], uv + 2 * cm.corner_uv[3*f+2],
+                    &cm.rest_inverse[4*f], J);
 }
 
 // Gradient (6) and Hessian (6x6) wrt (u0x,u0y,u1x,u1y,u2x,u2y) from the

@@ -159,6 +159,16 @@ inline void label_uv_vertices(Cut_mesh& cm, const std::vector<char>& seam)
   cm.uv.assign(2 * cm.uv_vertex.size(), 0.);
 }
 
+// Seams given per edge, as per core halfedge (both sides; never on the input boundary).
+template <typename TriangleMesh, typename EdgeSeamMap>
+void read_seam_map(const TriangleMesh& tm, EdgeSeamMap seam_map, const Face_graph_copy<TriangleMesh>& copy,
+                   const Cut_mesh& cm, std::vector<char>& seam)
+{
+  seam.assign(cm.corner_vertex.size(), 0);
+  for(std::size_t h = 0; h < seam.size(); ++h)
+    seam[h] = cm.opposite[h] >= 0 && bool(get(seam_map, edge(copy.corner_halfedge[h], tm)));
+}
+
 // Seams implied by a per-corner UV map: an interior edge whose two sides
 // disagree (beyond `tolerance`) at either endpoint.
 template <typename UVMap, typename TriangleMesh>

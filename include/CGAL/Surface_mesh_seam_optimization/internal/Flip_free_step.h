@@ -34,6 +34,18 @@ inline double smallest_positive_root(double a, double b, double c)
   return r;
 }
 
+// Largest t such that the triangle (a, b, c) moved by t * (pa, pb, pc) keeps
+// a positive signed area on [0, t).
+inline double triangle_flip_free_step(const double* a, const double* b, const double* c,
+                                      const double* pa, const double* pb, const double* pc)
+{
+  const double d1x = b[0] - a[0], d1y = b[1] - a[1], d2x = c[0] - a[0], d2y = c[1] - a[1];
+  const double q1x = pb[0] - pa[0], q1y = pb[1] - pa[1], q2x = pc[0] - pa[0], q2y = pc[1] - pa[1];
+  return smallest_positive_root(q1x * q2y - q1y * q2x,
+                                d1x * q2y - d1y * q2x + q1x * d2y - q1y * d2x,
+                                d1x * d2y - d1y * d2x);
+}
+
 // Largest t such that uv + s * dir flips no face for all s in [0, t).
 inline double max_flip_free_step(const Cut_mesh& cm, const double* uv, const double* dir)
 {
@@ -41,15 +53,8 @@ inline double max_flip_free_step(const Cut_mesh& cm, const double* uv, const dou
   const std::size_t nf = cm.number_of_faces();
   for(std::size_t f = 0; f < nf; ++f)
   {
-    const int i0 = cm.corner_uv[3*f], i1 = cm.corner_uv[3*f+1], i2 = cm.corner_uv[3*f+2];
-    const double d1x = uv[2*i1] - uv[2*i0], d1y = uv[2*i1+1] - uv[2*i0+1];
-    const double d2x = uv[2*i2] - uv[2*i0], d2y = uv[2*i2+1] - uv[2*i0+1];
-    const double q1x = dir[2*i1] - dir[2*i0], q1y = dir[2*i1+1] - dir[2*i0+1];
-    const double q2x = dir[2*i2] - dir[2*i0], q2y = dir[2*i2+1] - dir[2*i0+1];
-    const double c = d1x * d2y - d1y * d2x;
-    const double b = d1x * q2y - d1y * q2x + q1x * d2y - q1y * d2x;
-    const double a = q1x * q2y - q1y * q2x;
-    const double r = smallest_positive_root(a, b, c);
+    const int i0 = 2 * cm.corner_uv[3*f], i1 = 2 * cm.corner_uv[3*f+1], i2 = 2 * cm.corner_uv[3*f+2];
+    const double r = triangle_flip_free_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2);
     if(r < t) t = r;
   }
   return t;

@@ -37,16 +37,10 @@ double stencil_energy(const Cut_mesh& cm, const Energy& energy, const Local_sten
 {
   double e = 0;
   Eigen::Matrix2d J;
-  const double* B;
   for(std::size_t i = 0; i < s.faces.size(); ++i)
   {
-    const double* a = pos + 2 * s.local[3*i];
-    const double* b = pos + 2 * s.local[3*i+1];
-    const double* c = pos + 2 * s.local[3*i+2];
-    B = &cm.rest_inverse[4 * s.faces[i]];
-    const double d1x = b[0]-a[0], d1y = b[1]-a[1], d2x = c[0]-a[0], d2y = c[1]-a[1];
-    J << d1x * B[0] + d2x * B[1], d1x * B[2] + d2x * B[3],
-         d1y * B[0] + d2y * B[1], d1y * B[2] + d2y * B[3];
+    triangle_jacobian(pos + 2 * s.local[3*i], pos + 2 * s.local[3*i+1], pos + 2 * s.local[3*i+2],
+                      &cm.rest_inverse[4 * s.faces[i]], J);
     e += cm.face_area[s.faces[i]] * energy.value(J);
   }
   return e / cm.total_area;
@@ -73,11 +67,8 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
     {
       const int* l = &s.local[3*i];
       if(l[0] >= s.n_free && l[1] >= s.n_free && l[2] >= s.n_free) continue;
-      const double* a = &s.pos[2*l[0]]; const double* b = &s.pos[2*l[1]]; const double* c = &s.pos[2*l[2]];
       const double* B = &cm.rest_inverse[4 * s.faces[i]];
-      const double d1x = b[0]-a[0], d1y = b[1]-a[1], d2x = c[0]-a[0], d2y = c[1]-a[1];
-      J << d1x * B[0] + d2x * B[1], d1x * B[2] + d2x * B[3],
-           d1y * B[0] + d2y * B[1], d1y * B[2] + d2y * B[3];
+      triangle_jacobian(&s.pos[2*l[0]], &s.pos[2*l[1]], &s.pos[2*l[2]], B, J);
       energy.value_gradient_and_hessian(J, dJ, HJ, true);
       element_derivatives(Jacobian_coefficients(B), cm.face_area[s.faces[i]] / cm.total_area, dJ, HJ, ge, &He);
       for(int x = 0; x < 3; ++x)
@@ -103,11 +94,8 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
     for(std::size_t i = 0; i < s.faces.size(); ++i)
     {
       const int* l = &s.local[3*i];
-      const double* a = &s.pos[2*l[0]]; const double* b = &s.pos[2*l[1]]; const double* c = &s.pos[2*l[2]];
-      const double* pa = &dir[2*l[0]]; const double* pb = &dir[2*l[1]]; const double* pc = &dir[2*l[2]];
-      const double d1x = b[0]-a[0], d1y = b[1]-a[1], d2x = c[0]-a[0], d2y = c[1]-a[1];
-      const double q1x = pb[0]-pa[0], q1y = pb[1]-pa[1], q2x = pc[0]-pa[0], q2y = pc[1]-pa[1];
-      const double r = smallest_positive_root(q1x*q2y - q1y*q2x, d1x*q2y - d1y*q2x + q1x*d2y - q1y*d2x, d1x*d2y - d1y*d2x);
+      const double r = triangle_flip_free_step(&s.pos[2*l[0]], &s.pos[2*l[1]], &s.pos[2*l[2]],
+                                               &dir[2*l[0]], &dir[2*l[1]], &dir[2*l[2]]);
       t = (std::min)(t, 0.99 * r);
     }
     double en = e;
