@@ -5,12 +5,23 @@
 # Markdown table with the paper's code's figures (reference_optcuts.csv) beside
 # ours.
 #
-# Usage: run_benchmark.sh [--quick] [--timeout S] [--bound B] [--out PREFIX]
+# Usage: run_benchmark.sh [--quick | --scaling] [--timeout S] [--bound B] [--out PREFIX]
 #                         [--data-dir DIR] [--build-dir DIR] [--jobs N] [mesh ...]
 #   --quick        cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000
 #   (default)      every mesh of reference_optcuts.csv
 #   mesh ...       explicit mesh names (in DATA/benchmark) or .obj paths; mode "custom"
-#   --timeout S    per-mesh time limit in seconds (default 600)
+#   --scaling      seconds and peak memory against faces on DATA/scalability/lucy_o_f*
+#                  and two Loop subdivisions of lucy_o_f24136 (96544 and 386176 faces,
+#                  made once into BUILD/scaling_meshes), with least-squares exponents:
+#                  minimize_distortion() (initial seams) on every size, and
+#                  optimize_seams() on every size until one hits --time-limit
+#   --time-limit S (scaling) cancel optimize_seams() past S seconds (default 900); the
+#                  larger sizes are then not run
+#   --max-faces N  (scaling) leave out the meshes with more than N faces
+#   --append FILE  (scaling) also put the Markdown report into FILE, replacing the
+#                  section of an earlier scaling run
+#   --timeout S    per-mesh time limit in seconds (default 600; scaling: 3600), after
+#                  which the process is killed
 #   --bound B      distortion bound (default 4.1; the reference figures are at 4.1)
 #   --out PREFIX   write PREFIX.csv and PREFIX.md (default benchmark/results_<mode>)
 #   --data-dir DIR shared data (default: <repo>/../shared/data, or $SMSO_SHARED_DATA)
@@ -25,7 +36,10 @@ script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$script_dir/../.." && pwd)
 
 mode=full
-timeout_s=600
+timeout_s=
+time_limit=900
+max_faces=0
+append_to=
 bound=4.1
 out_prefix=
 data_dir=${SMSO_SHARED_DATA:-$repo/../shared/data}
@@ -35,18 +49,25 @@ meshes=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) mode=quick ;;
+    --scaling) mode=scaling ;;
+    --time-limit) time_limit=$2; shift ;;
+    --max-faces) max_faces=$2; shift ;;
+    --append) append_to=$2; shift ;;
     --timeout) timeout_s=$2; shift ;;
     --bound) bound=$2; shift ;;
     --out) out_prefix=$2; shift ;;
     --data-dir) data_dir=$2; shift ;;
     --build-dir) build_dir=$2; shift ;;
     --jobs) jobs=$2; shift ;;
-    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
     *) meshes+=("$1"); mode=custom ;;
   esac
   shift
 done
+if [ -z "$timeout_s" ]; then
+  if [ "$mode" = scaling ]; then timeout_s=3600; else timeout_s=600; fi
+fi
 
 if [ ! -d "$data_dir" ]; then echo "shared data not found: $data_dir (use --data-dir)" >&2; exit 2; fi
 data_dir=$(cd "$data_dir" && pwd)
@@ -59,9 +80,21 @@ uvmetrics=$data_dir/../tools/uvmetrics.py
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
   cmake -S "$repo" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release || { echo "configure failed" >&2; exit 1; }
 fi
-cmake --build "$build_dir" --target seam_benchmark -j "$jobs" || { echo "build failed" >&2; exit 1; }
+targets=(seam_benchmark)
+[ "$mode" = scaling ] && targets+=(subdivide_mesh)
+cmake --build "$build_dir" --target "${targets[@]}" -j "$jobs" || { echo "build failed" >&2; exit 1; }
 bin=$build_dir/benchmark/Surface_mesh_seam_optimization/seam_benchmark
 [ -x "$bin" ] || { echo "no binary $bin" >&2; exit 1; }
+
+# SMSO_BENCH_COMMIT names the commit when the tree is an export (git archive) without .git
+commit=${SMSO_BENCH_COMMIT:-$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)}
+cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
+dirty=$(git -C "$repo" status --porcelain -- include benchmark/Surface_mesh_seam_optimization/seam_benchmark.cpp 2>/dev/null | wc -l)
+
+if [ "$mode" = scaling ]; then
+  exec bash "$script_dir/run_scaling.sh" "$bin" "$build_dir" "$data_dir" "$uvmetrics" "$out_prefix" \
+    "$time_limit" "$timeout_s" "$max_faces" "$bound" "$commit" "$dirty" "$cpu" "$append_to"
+fi
 
 # --- mesh list
 if [ "$mode" = quick ]; then
@@ -105,10 +138,6 @@ for m in "${meshes[@]}"; do
   printf '%-24s %6.1fs  %s\n' "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$line" >&2
 done
 
-# SMSO_BENCH_COMMIT names the commit when the tree is an export (git archive) without .git
-commit=${SMSO_BENCH_COMMIT:-$(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)}
-dirty=$(git -C "$repo" status --porcelain -- include benchmark/Surface_mesh_seam_optimization/seam_benchmark.cpp 2>/dev/null | wc -l)
-cpu=$(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//')
 
 python3 - "$raw" "$work" "$reference" "$out_prefix" "$mode" "$bound" "$commit" "$dirty" "$(nproc)" "$cpu" \
   "$start_date" "$load_before" "$timeout_s" <<'EOF'

@@ -9,13 +9,19 @@
 // A mesh that cannot be read or that optimize_seams() rejects (not a disk,
 // not manifold, ...) gives a line with its status, not a failure; the exit
 // code is non-zero only for a wrong command line.
+// --time-limit S: a visitor cancels the run past S seconds; the best result so
+// far is written and the status is WARNING_CANCELLED.
+// --distortion-only: minimize_distortion() with the seams of the initial map
+// (none for a disk) instead of optimize_seams(): the descent step alone.
 //
-// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--no-header] mesh.obj ...
+// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S]
+//                       [--distortion-only] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 
 #include <chrono>
@@ -23,6 +29,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <string>
@@ -41,6 +48,31 @@ static double peak_mb()
   if(getrusage(RUSAGE_SELF, &ru) != 0) return -1;
   return double(ru.ru_maxrss) / 1024.; // kilobytes on Linux
 }
+
+// Cancels the run once `limit` seconds have passed since `start`.
+struct Time_limit_visitor : public SMSO::Default_seam_optimization_visitor
+{
+  std::chrono::steady_clock::time_point start;
+  double limit;
+
+  Time_limit_visitor(std::chrono::steady_clock::time_point start, double limit) : start(start), limit(limit) {}
+  bool in_time() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < limit;
+  }
+  bool on_iteration(const SMSO::Seam_optimization_progress&) { return in_time(); }
+  bool on_topology_operation(const SMSO::Seam_optimization_progress&) { return in_time(); }
+  bool on_lambda_update(const SMSO::Seam_optimization_progress&) { return in_time(); }
+};
+
+struct Settings
+{
+  double bound = 4.1;
+  std::size_t max_iterations = 100000;
+  double time_limit = 0; // seconds; 0: none
+  bool distortion_only = false;
+  std::string out_dir = ".";
+};
 
 struct Row
 {
@@ -67,7 +99,7 @@ static void print(const Row& r)
   std::fflush(stdout);
 }
 
-static Row run(const std::string& file, double bound, std::size_t max_iterations, const std::string& out_dir)
+static Row run(const std::string& file, const Settings& settings)
 {
   Row row;
   row.name = std::filesystem::path(file).stem().string();
@@ -82,10 +114,16 @@ static Row run(const std::string& file, double bound, std::size_t max_iterations
   auto seams = sm.add_property_map<Surface_mesh::Edge_index, bool>("e:seam", false).first;
 
   const auto start = std::chrono::steady_clock::now();
+  Time_limit_visitor visitor(start, settings.time_limit > 0 ? settings.time_limit : 1e300);
   const SMSO::Optimization_result r =
-    SMSO::optimize_seams(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(bound),
-                                                  SMSO_np::maximum_number_of_iterations(max_iterations),
-                                                  SMSO_np::edge_is_seam_map(seams)));
+    settings.distortion_only
+      ? SMSO::minimize_distortion(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
+                                                           SMSO_np::maximum_number_of_iterations(settings.max_iterations),
+                                                           SMSO_np::edge_is_seam_map(seams)))
+      : SMSO::optimize_seams(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
+                                                      SMSO_np::maximum_number_of_iterations(settings.max_iterations),
+                                                      SMSO_np::edge_is_seam_map(seams),
+                                                      SMSO_np::visitor(std::ref(visitor))));
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.status = SMSO::get_error_code_name(r.status);
   if(!r.has_result())
@@ -103,9 +141,9 @@ static Row run(const std::string& file, double bound, std::size_t max_iterations
   row.bound_met = r.bound_met;
   const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
   row.flips = m.flipped_triangles;
-  if(!out_dir.empty())
+  if(!settings.out_dir.empty())
   {
-    const std::string out = (std::filesystem::path(out_dir) / (row.name + ".obj")).string();
+    const std::string out = (std::filesystem::path(settings.out_dir) / (row.name + ".obj")).string();
     if(!SMSO::IO::write_OBJ_with_uv_map(out, sm, uv))
     {
       std::cerr << row.name << ": cannot write " << out << "\n";
@@ -118,37 +156,44 @@ static Row run(const std::string& file, double bound, std::size_t max_iterations
 static int usage(const char* argv0)
 {
   std::cerr << "usage: " << argv0
-            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--no-header] mesh.obj ...\n"
+            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S] [--distortion-only]"
+               " [--no-header] mesh.obj ...\n"
                "  --bound B           distortion bound on E_SD (default 4.1)\n"
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
-               "  --max-iterations N  cap on Newton iterations (default: the library's)\n"
+               "  --max-iterations N  cap on Newton iterations (default 100000)\n"
+               "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
+               "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
                "  --no-header         do not print the CSV header line\n";
   return EXIT_FAILURE;
 }
 
 int main(int argc, char** argv)
 {
-  double bound = 4.1;
-  std::size_t max_iterations = 100000;
-  std::string out_dir = ".";
+  Settings settings;
   bool header = true;
   std::vector<std::string> files;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if(a == "--bound" && i + 1 < argc) bound = std::atof(argv[++i]);
-    else if(a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
-    else if(a == "--max-iterations" && i + 1 < argc) max_iterations = std::strtoull(argv[++i], nullptr, 10);
+    if(a == "--bound" && i + 1 < argc) settings.bound = std::atof(argv[++i]);
+    else if(a == "--out-dir" && i + 1 < argc) settings.out_dir = argv[++i];
+    else if(a == "--max-iterations" && i + 1 < argc) settings.max_iterations = std::strtoull(argv[++i], nullptr, 10);
+    else if(a == "--time-limit" && i + 1 < argc)
+    {
+      settings.time_limit = std::atof(argv[++i]);
+      if(!(settings.time_limit > 0)) return usage(argv[0]);
+    }
+    else if(a == "--distortion-only") settings.distortion_only = true;
     else if(a == "--no-header") header = false;
     else if(a == "-h" || a == "--help") { usage(argv[0]); return EXIT_SUCCESS; }
     else if(!a.empty() && a[0] == '-') return usage(argv[0]);
     else files.push_back(a);
   }
   if(files.empty()) return usage(argv[0]);
-  if(!out_dir.empty())
+  if(!settings.out_dir.empty())
   {
     std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
+    std::filesystem::create_directories(settings.out_dir, ec);
   }
 
   if(header)
@@ -159,7 +204,7 @@ int main(int argc, char** argv)
     Row row;
     try
     {
-      row = run(file, bound, max_iterations, out_dir);
+      row = run(file, settings);
     }
     catch(const std::bad_alloc&)
     {
