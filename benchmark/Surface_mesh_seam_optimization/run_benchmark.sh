@@ -12,11 +12,14 @@
 #   mesh ...       explicit mesh names (in DATA/benchmark) or .obj paths; mode "custom"
 #   --scaling      seconds and peak memory against faces on DATA/scalability/lucy_o_f*
 #                  and two Loop subdivisions of lucy_o_f24136 (96544 and 386176 faces,
-#                  made once into BUILD/scaling_meshes), with least-squares exponents:
-#                  minimize_distortion() (initial seams) on every size, and
-#                  optimize_seams() on every size until one hits --time-limit
-#   --time-limit S (scaling) cancel optimize_seams() past S seconds (default 900); the
-#                  larger sizes are then not run
+#                  made once into BUILD/scaling_meshes), with least-squares exponents
+#                  (see run_scaling.sh): minimize_distortion() on every size (to
+#                  convergence up to --converge-max-faces, else 20 Newton iterations),
+#                  and optimize_seams() on the sizes that fit --time-limit
+#   --time-limit S (scaling) cancel optimize_seams() past S seconds (default 900); a
+#                  size predicted to take over 1.5 S, or larger than one that was
+#                  cancelled, is not run
+#   --converge-max-faces N (scaling) default 100000
 #   --max-faces N  (scaling) leave out the meshes with more than N faces
 #   --append FILE  (scaling) also put the Markdown report into FILE, replacing the
 #                  section of an earlier scaling run
@@ -39,6 +42,7 @@ mode=full
 timeout_s=
 time_limit=900
 max_faces=0
+converge_max_faces=100000
 append_to=
 bound=4.1
 out_prefix=
@@ -52,6 +56,7 @@ while [ $# -gt 0 ]; do
     --scaling) mode=scaling ;;
     --time-limit) time_limit=$2; shift ;;
     --max-faces) max_faces=$2; shift ;;
+    --converge-max-faces) converge_max_faces=$2; shift ;;
     --append) append_to=$2; shift ;;
     --timeout) timeout_s=$2; shift ;;
     --bound) bound=$2; shift ;;
@@ -93,7 +98,7 @@ dirty=$(git -C "$repo" status --porcelain -- include benchmark/Surface_mesh_seam
 
 if [ "$mode" = scaling ]; then
   exec bash "$script_dir/run_scaling.sh" "$bin" "$build_dir" "$data_dir" "$uvmetrics" "$out_prefix" \
-    "$time_limit" "$timeout_s" "$max_faces" "$bound" "$commit" "$dirty" "$cpu" "$append_to"
+    "$time_limit" "$timeout_s" "$max_faces" "$bound" "$commit" "$dirty" "$cpu" "$append_to" "$converge_max_faces"
 fi
 
 # --- mesh list

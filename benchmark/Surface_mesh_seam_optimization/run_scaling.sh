@@ -5,17 +5,25 @@
 # On the lucy_o_f* series (6k to 48k faces, a topological disk) and two Loop
 # subdivisions of lucy_o_f24136 (96544 and 386176 faces, made once into
 # BUILD/scaling_meshes, not committed), in order of size, one process per run:
-# - minimize_distortion() from the initial map (circle boundary + Tutte, seams
-#   fixed: none) on every size;
-# - optimize_seams() at the bound with a time limit: a size that hits it is
-#   reported as cancelled, and the larger sizes are not run.
+# - distortion only: the initial map (circle boundary + Tutte), timed apart,
+#   then minimize_distortion() from it (seams fixed: none), with the default
+#   solver (Eigen SimplicialLDLT): to convergence up to CONVERGE_MAX_FACES
+#   faces, else 20 Newton iterations (the iteration count grows slowly with
+#   the size, the cost of an iteration is what scales); and, when built with
+#   CHOLMOD, 20 iterations with Cholmod_traits on every size;
+# - seam optimization: optimize_seams() at the bound, cancelled by a visitor
+#   past TIME_LIMIT seconds; a size whose time, extrapolated from the sizes
+#   done, exceeds 1.5 TIME_LIMIT, or larger than a size that was cancelled,
+#   is not run (SKIPPED).
 # Prints wall seconds and peak memory against faces, fits the exponents by
-# least squares of log(seconds) and log(MB) against log(faces), and writes
-# PREFIX.csv and PREFIX.md (and the same Markdown into APPEND_FILE, if given).
+# least squares of log(y) against log(faces), and writes PREFIX.csv and
+# PREFIX.md (and the same Markdown into APPEND_FILE, if given, replacing the
+# section of an earlier scaling run).
 set -u
-[ $# -eq 13 ] || { echo "run_scaling.sh: called by run_benchmark.sh --scaling" >&2; exit 2; }
+[ $# -eq 14 ] || { echo "run_scaling.sh: called by run_benchmark.sh --scaling" >&2; exit 2; }
 bin=$1 build_dir=$2 data_dir=$3 uvmetrics=$4 out_prefix=$5 time_limit=$6 timeout_s=$7 max_faces=$8
-bound=$9 commit=${10} dirty=${11} cpu=${12} append_to=${13}
+bound=$9 commit=${10} dirty=${11} cpu=${12} append_to=${13} converge_max_faces=${14}
+capped_iterations=20
 
 sub_bin=$(dirname "$bin")/subdivide_mesh
 mesh_dir=$build_dir/scaling_meshes
@@ -35,6 +43,8 @@ for steps in 1 2; do
   fi
   series+=("$file")
 done
+has_cholmod=
+"$bin" --solver cholmod --help >/dev/null 2>&1 && has_cholmod=1
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/smso_scaling.XXXXXX")
 raw=$work/raw.csv
@@ -45,7 +55,7 @@ load_before=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 seam_timeout=$(awk -v a="$timeout_s" -v b="$time_limit" 'BEGIN { t = 2 * b + 300; print (a > t ? a : t) }')
 echo "scaling: ${#series[@]} meshes, seam optimization cancelled past ${time_limit}s, outputs in $work" >&2
 
-# run MODE FILE [seam_benchmark options]: appends "MODE,<seam_benchmark line>,<uvmetrics json file>" to raw
+# run MODE FILE [seam_benchmark options]: appends "MODE,<seam_benchmark line>" to raw, sets status
 run() {
   local run_mode=$1 file=$2; shift 2
   local name; name=$(basename "$file" .obj)
@@ -58,9 +68,9 @@ run() {
   rc=$?
   t1=$(date +%s.%N)
   if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
-    line="$name,,$limit,,,,,,,,TIMEOUT,,"
+    line="$name,,$limit,,,,,,,,TIMEOUT,,,"
   elif [ $rc -ne 0 ] || [ -z "$line" ]; then
-    line="$name,,,,,,,,,,CRASH_rc$rc,,"
+    line="$name,,,,,,,,,,CRASH_rc$rc,,,"
     crashed=1
   fi
   # independent check of the output (no overlap test: slow on 400k faces, and not what is measured here)
@@ -70,31 +80,49 @@ run() {
     rm -f "$out_dir/$name.obj" # up to 40 MB each
   fi
   echo "$run_mode,$line" >> "$raw"
-  printf '%-9s %-24s %7.1fs  %s\n' "$run_mode" "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$line" >&2
+  printf '%-10s %-24s %7.1fs  %s\n' "$run_mode" "$name" "$(awk -v a="$t0" -v b="$t1" 'BEGIN{print b-a}')" "$line" >&2
   status=$(cut -d, -f11 <<<"$line")
+}
+
+# predicted seconds of optimize_seams() on $1 faces from the finished seam runs (empty below 2 runs)
+predict_seams() {
+  awk -F, -v F="$1" '$1 == "seams" && ($12 == "OK" || $12 ~ /^WARNING_(BOUND|MAX)/) && $4 > 0 {
+      x = log($3); y = log($4); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
+    END { if(n >= 2) { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.0f", exp(a + b * log(F)) } }' "$raw"
 }
 
 skip_seams=
 for file in "${series[@]}"; do
+  name=$(basename "$file" .obj)
   faces=$(grep -c '^f ' "$file")
   if [ "$max_faces" -gt 0 ] && [ "$faces" -gt "$max_faces" ]; then continue; fi
-  run distortion "$file" --distortion-only
+  if [ "$faces" -le "$converge_max_faces" ]; then
+    run distortion "$file" --distortion-only
+  else
+    run distortion "$file" --distortion-only --max-iterations "$capped_iterations"
+  fi
+  [ -n "$has_cholmod" ] && run cholmod "$file" --distortion-only --solver cholmod --max-iterations "$capped_iterations"
+  predicted=$(predict_seams "$faces")
+  if [ -z "$skip_seams" ] && [ -n "$predicted" ] && [ "$predicted" -gt $((time_limit * 3 / 2)) ]; then
+    skip_seams="predicted"
+  fi
   if [ -n "$skip_seams" ]; then
-    echo "seams,$(basename "$file" .obj),$faces,,,,,,,,,SKIPPED,," >> "$raw"
+    echo "seams,$name,$faces,$predicted,,,,,,,,SKIPPED,,," >> "$raw" # seconds: extrapolated
+    echo "seams      $name: skipped (extrapolated ${predicted:-?} s)" >&2
     continue
   fi
   run seams "$file" --time-limit "$time_limit"
-  case "$status" in OK|WARNING_BOUND_NOT_MET|WARNING_MAXIMUM_ITERATIONS) ;; *) skip_seams=1 ;; esac
+  case "$status" in OK|WARNING_BOUND_NOT_MET|WARNING_MAXIMUM_ITERATIONS) ;; *) skip_seams="cancelled" ;; esac
 done
 load_after=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 
 python3 - "$raw" "$work" "$out_prefix" "$bound" "$commit" "$dirty" "$(nproc)" "$cpu" "$start_date" \
-  "$load_before" "$load_after" "$time_limit" "$append_to" <<'EOF'
+  "$load_before" "$load_after" "$time_limit" "$append_to" "$converge_max_faces" "$capped_iterations" <<'EOF'
 import csv, json, math, os, sys
 (raw, work, prefix, bound, commit, dirty, nproc, cpu, date, load_before, load_after, time_limit,
- append_to) = sys.argv[1:]
+ append_to, converge_max_faces, capped) = sys.argv[1:]
 fields = ["mode", "mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
-          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda"]
+          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds"]
 rows = [dict(zip(fields, l)) for l in csv.reader(open(raw)) if l]
 for r in rows:
     p = os.path.join(work, f"{r['mode']}.{r['mesh']}.uvm.json")
@@ -109,7 +137,7 @@ def num(x):
     except (TypeError, ValueError): return None
 
 def fit(points):
-    """least squares of log y = a + b log x: (b, r^2, a), or None below 2 points"""
+    """least squares of log y = a + b log x: (b, r^2, a, n), or None below 2 points"""
     pts = [(math.log(x), math.log(y)) for x, y in points if x and y and x > 0 and y > 0]
     if len(pts) < 2: return None
     n = len(pts)
@@ -122,9 +150,12 @@ def fit(points):
 def fmt(x, d=2):
     return "-" if x is None else f"{x:.{d}f}"
 
-done = lambda r: r["status"] in ("OK", "WARNING_BOUND_NOT_MET", "WARNING_MAXIMUM_ITERATIONS")
-dist = [r for r in rows if r["mode"] == "distortion"]
-seam = {r["mesh"]: r for r in rows if r["mode"] == "seams"}
+finished = lambda r: r["status"] in ("OK", "WARNING_BOUND_NOT_MET", "WARNING_MAXIMUM_ITERATIONS")
+converged = lambda r: r["status"] == "OK"
+by_mode = {}
+for r in rows: by_mode.setdefault(r["mode"], {})[r["mesh"]] = r
+dist, chol, seam = by_mode.get("distortion", {}), by_mode.get("cholmod", {}), by_mode.get("seams", {})
+per_it = lambda r: num(r["seconds"]) / num(r["iterations"]) if num(r["iterations"]) and num(r["seconds"]) else None
 
 with open(prefix + ".csv", "w", newline="") as f:
     cols = fields + ["uvm_e_sd", "uvm_flips", "uvm_valid"]
@@ -133,61 +164,84 @@ with open(prefix + ".csv", "w", newline="") as f:
     for r in rows: w.writerow({k: ("" if r.get(k) is None else r.get(k)) for k in cols})
 
 fits = []
-def add_fit(label, rs, key):
-    pts = [(num(r["faces"]), key(r)) for r in rs if done(r)]
-    fr = fit(pts)
+def add_fit(label, rs, keep, key):
+    fr = fit([(num(r["faces"]), key(r)) for r in rs.values() if keep(r)])
     fits.append((label, fr))
     return fr
-add_fit("minimize_distortion(): seconds", dist, lambda r: num(r["seconds"]))
-add_fit("minimize_distortion(): seconds per Newton iteration", dist,
-        lambda r: num(r["seconds"]) / num(r["iterations"]) if num(r["iterations"]) else None)
-add_fit("minimize_distortion(): peak MB", dist, lambda r: num(r["peak_mb"]))
-seam_fit = add_fit("optimize_seams(): seconds", list(seam.values()), lambda r: num(r["seconds"]))
-add_fit("optimize_seams(): peak MB", list(seam.values()), lambda r: num(r["peak_mb"]))
+add_fit("initial map (circle + Tutte): seconds", dist, lambda r: num(r["initial_map_seconds"]) is not None,
+        lambda r: num(r["initial_map_seconds"]))
+add_fit("minimize_distortion(), SimplicialLDLT: seconds per Newton iteration", dist, finished, per_it)
+add_fit("minimize_distortion(), SimplicialLDLT: seconds to convergence", dist, converged, lambda r: num(r["seconds"]))
+add_fit("minimize_distortion(), SimplicialLDLT: Newton iterations to convergence", dist, converged,
+        lambda r: num(r["iterations"]))
+add_fit("minimize_distortion(), SimplicialLDLT: peak MB", dist, finished, lambda r: num(r["peak_mb"]))
+if chol:
+    add_fit("minimize_distortion(), CHOLMOD: seconds per Newton iteration", chol, finished, per_it)
+    add_fit("minimize_distortion(), CHOLMOD: peak MB", chol, finished, lambda r: num(r["peak_mb"]))
+seam_fit = add_fit("optimize_seams(): seconds", seam, finished, lambda r: num(r["seconds"]))
+add_fit("optimize_seams(): Newton iterations", seam, finished, lambda r: num(r["iterations"]))
+add_fit("optimize_seams(): peak MB", seam, finished, lambda r: num(r["peak_mb"]))
 
 L = ["<!-- scaling:begin -->", "## Scaling (lucy series and Loop subdivisions)", ""]
+L.append(f"Made by `run_benchmark.sh --scaling`.")
+L.append("")
 L.append(f"- date: {date}; git commit: {commit}" +
          (f" (working tree had {dirty} uncommitted change(s) in include/ or the benchmark source)" if dirty != "0" else ""))
 L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start {load_before}, at end {load_after} "
-         "(the machine is shared: wall times are noisy, one run per size)")
-L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data, one topological disk each), and "
-         "lucy_o_f24136 after 1 and 2 steps of Loop subdivision (CGAL::Subdivision_method_3, made by subdivide_mesh)")
-L.append("- distortion only: `minimize_distortion()` from the initial map (circle boundary + Tutte, no seam), "
-         "to convergence; s = wall seconds of the call (initial map included)")
+         "(the machine is shared with other jobs: wall times are noisy, one run per size)")
+L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topological disk), and lucy_o_f24136 "
+         "after 1 and 2 steps of Loop subdivision (CGAL::Subdivision_method_3, made by `subdivide_mesh`)")
+L.append(f"- distortion only: the initial map (circle boundary + Tutte through Surface_mesh_parameterization; "
+         f"\"init s\"), then `minimize_distortion()` from it, seams fixed (none), default solver (Eigen "
+         f"SimplicialLDLT): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
+         f"(\"capped\"; E_SD is then not the minimum); \"s\" excludes the initial map"
+         + (f"; CHOLMOD: the same with `Cholmod_traits`, {capped} iterations on every size" if chol else ""))
 L.append(f"- seams: `optimize_seams()` at the bound {bound}, not bijective, cancelled by a visitor past {time_limit} s "
-         "(status WARNING_CANCELLED; the larger sizes are then not run: SKIPPED)")
-L.append("- MB: peak resident memory (ru_maxrss) of the process, one process per run (reading the mesh included); "
+         f"(WARNING_CANCELLED); a size whose time extrapolated from the finished sizes exceeds 1.5 x {time_limit} s, "
+         "or larger than a cancelled one, is not run (SKIPPED, with the extrapolated seconds)")
+L.append("- MB: peak resident memory (ru_maxrss) of the process, one process per run (mesh reading included); "
          "E_SD checked by uvmetrics.py on the written OBJ (no overlap test)")
 L.append("")
-hdr = ["mesh", "faces", "dist. s", "dist. Newton it", "dist. s/it", "dist. E_SD", "dist. MB",
-       "seams s", "seams Newton it", "topo ops", "seams E_SD", "E_se", "seams MB", "seams status"]
+hdr = ["mesh", "faces", "init s", "dist. s", "dist. Newton it", "dist. s/it", "dist. E_SD", "dist. MB"]
+if chol: hdr += ["CHOLMOD s/it", "CHOLMOD MB"]
+hdr += ["seams s", "seams Newton it", "topo ops", "seams E_SD", "E_se", "seams MB", "seams status"]
 L.append("| " + " | ".join(hdr) + " |")
 L.append("|" + "---|" * len(hdr))
-for d in dist:
-    s = seam.get(d["mesh"], {})
-    it = num(d["iterations"])
-    cells = [d["mesh"], d["faces"], fmt(num(d["seconds"])), d["iterations"] or "-",
-             fmt(num(d["seconds"]) / it, 4) if it and num(d["seconds"]) else "-",
-             fmt(num(d["uvm_e_sd"]) if d["uvm_e_sd"] is not None else num(d["e_sd"]), 4),
-             fmt(num(d["peak_mb"]), 0),
-             fmt(num(s.get("seconds"))), s.get("iterations") or "-", s.get("topology_operations") or "-",
-             fmt(num(s.get("uvm_e_sd")) if s.get("uvm_e_sd") is not None else num(s.get("e_sd")), 4),
-             fmt(num(s.get("seam_length_normalized")), 3), fmt(num(s.get("peak_mb")), 0),
-             s.get("status", "-") or "-"]
+for name, d in dist.items():
+    s = seam.get(name, {})
+    it = d["iterations"] or "-"
+    capped = d["status"] == "WARNING_MAXIMUM_ITERATIONS"
+    if capped: it += " (capped)"
+    cells = [name, d["faces"], fmt(num(d["initial_map_seconds"])), fmt(num(d["seconds"])), it,
+             fmt(per_it(d), 4) if finished(d) else "-",
+             "-" if capped else fmt(num(d["uvm_e_sd"]) if d["uvm_e_sd"] is not None else num(d["e_sd"]), 4),
+             fmt(num(d["peak_mb"]), 0)]
+    if chol:
+        c = chol.get(name)
+        cells += [fmt(per_it(c), 4) if c and finished(c) else (c["status"] if c else "-"),
+                  fmt(num(c["peak_mb"]), 0) if c else "-"]
+    st = s.get("status", "-") or "-"
+    skipped = st == "SKIPPED"
+    if skipped and num(s.get("seconds")):
+        st += f" (extrapolated {num(s['seconds']) / 60:.0f} min)"
+    cells += ["-" if skipped else fmt(num(s.get("seconds"))), s.get("iterations") or "-", s.get("topology_operations") or "-",
+              fmt(num(s.get("uvm_e_sd")) if s.get("uvm_e_sd") is not None else num(s.get("e_sd")), 4),
+              fmt(num(s.get("seam_length_normalized")), 3), fmt(num(s.get("peak_mb")), 0), st]
     L.append("| " + " | ".join(str(c) for c in cells) + " |")
 L.append("")
-L.append("Fitted exponents (least squares of log y against log faces; only the runs that finished):")
+L.append("Fitted exponents b of y ~ faces^b (least squares of log y against log faces, over the runs that "
+         "finished; \"to convergence\" only over the converged ones):")
 L.append("")
-L.append("| quantity | exponent | r^2 | sizes |")
+L.append("| quantity | exponent b | r^2 | sizes |")
 L.append("|---|---|---|---|")
 for label, fr in fits:
     L.append(f"| {label} | " + (f"{fr[0]:.2f} | {fr[1]:.3f} | {fr[3]}" if fr else "- | - | fewer than 2") + " |")
 if seam_fit:
     b, _, a, _ = seam_fit
-    big = max(num(r["faces"]) for r in dist)
+    big = max(num(r["faces"]) for r in dist.values())
     L.append("")
     L.append(f"Extrapolated from the fit, `optimize_seams()` on {int(big)} faces would take about "
-             f"{math.exp(a + b * math.log(big)) / 3600:.1f} h.")
+             f"{math.exp(a + b * math.log(big)) / 3600:.1f} h on this machine.")
 L.append("<!-- scaling:end -->")
 text = "\n".join(L) + "\n"
 open(prefix + ".md", "w").write(text)

@@ -2,7 +2,7 @@
 // each mesh given, writes DIR/<name>.obj with the UVs, and prints one CSV line
 // per mesh:
 //   mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,
-//   charts,flipped_triangles,peak_mb,status,bound_met,lambda
+//   charts,flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds
 // seconds: wall time of the optimize_seams() call (reading and writing excluded).
 // peak_mb: getrusage(RUSAGE_SELF).ru_maxrss of the whole process so far, so run
 // one mesh per process to get a per-mesh figure (run_benchmark.sh does).
@@ -12,14 +12,19 @@
 // --time-limit S: a visitor cancels the run past S seconds; the best result so
 // far is written and the status is WARNING_CANCELLED.
 // --distortion-only: minimize_distortion() with the seams of the initial map
-// (none for a disk) instead of optimize_seams(): the descent step alone.
+// (none for a disk) instead of optimize_seams(): the descent step alone. The
+// initial map (compute_initial_parameterization()) is then timed apart:
+// seconds is the descent from it, initial_map_seconds the map itself.
+// --solver cholmod: Cholmod_traits instead of the default Eigen_simplicial_ldlt_traits
+// (when the package is built with CHOLMOD).
 //
 // Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S]
-//                       [--distortion-only] [--no-header] mesh.obj ...
+//                       [--distortion-only] [--solver ldlt|cholmod] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
+#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
@@ -71,6 +76,7 @@ struct Settings
   std::size_t max_iterations = 100000;
   double time_limit = 0; // seconds; 0: none
   bool distortion_only = false;
+  bool cholmod = false;
   std::string out_dir = ".";
 };
 
@@ -78,7 +84,7 @@ struct Row
 {
   std::string name;
   std::size_t faces = 0;
-  double seconds = 0;
+  double seconds = 0, initial_map_seconds = -1; // -1: not timed apart
   std::size_t iterations = 0, topology_operations = 0, charts = 0, flips = 0;
   double e_sd = 0, seam = 0, lambda = 0;
   bool bound_met = false, has_result = false;
@@ -89,14 +95,31 @@ static void print(const Row& r)
 {
   if(!r.has_result) // rejected or unreadable: the figures are left empty
   {
-    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
+    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
     std::fflush(stdout);
     return;
   }
-  std::printf("%s,%zu,%.3f,%zu,%zu,%.6f,%.6f,%zu,%zu,%.1f,%s,%d,%.6g\n", r.name.c_str(), r.faces, r.seconds,
+  std::printf("%s,%zu,%.3f,%zu,%zu,%.6f,%.6f,%zu,%zu,%.1f,%s,%d,%.6g,", r.name.c_str(), r.faces, r.seconds,
               r.iterations, r.topology_operations, r.e_sd, r.seam, r.charts, r.flips, peak_mb(), r.status.c_str(),
               int(r.bound_met), r.lambda);
+  if(r.initial_map_seconds >= 0) std::printf("%.3f", r.initial_map_seconds);
+  std::printf("\n");
   std::fflush(stdout);
+}
+
+template <typename SolverTraits>
+static SMSO::Optimization_result optimize(const Surface_mesh& sm,
+                                          Surface_mesh::Property_map<Surface_mesh::Halfedge_index, K::Point_2> uv,
+                                          Surface_mesh::Property_map<Surface_mesh::Edge_index, bool> seams,
+                                          const Settings& settings, Time_limit_visitor& visitor)
+{
+  const auto common = SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
+                                       SMSO_np::maximum_number_of_iterations(settings.max_iterations),
+                                       SMSO_np::edge_is_seam_map(seams),
+                                       SMSO_np::sparse_linear_solver(SolverTraits()));
+  if(settings.distortion_only)
+    return SMSO::minimize_distortion(sm, uv, SMSO_np::combine(common, SMSO_np::use_uv_map_as_initial(true)));
+  return SMSO::optimize_seams(sm, uv, SMSO_np::combine(common, SMSO_np::visitor(std::ref(visitor))));
 }
 
 static Row run(const std::string& file, const Settings& settings)
@@ -113,17 +136,26 @@ static Row run(const std::string& file, const Settings& settings)
   auto uv = sm.add_property_map<Surface_mesh::Halfedge_index, K::Point_2>("h:uv").first;
   auto seams = sm.add_property_map<Surface_mesh::Edge_index, bool>("e:seam", false).first;
 
+  if(settings.distortion_only)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const SMSO::Error_code ec = SMSO::compute_initial_parameterization(sm, seams, uv);
+    row.initial_map_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if(ec != SMSO::OK)
+    {
+      row.status = SMSO::get_error_code_name(ec);
+      return row;
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   Time_limit_visitor visitor(start, settings.time_limit > 0 ? settings.time_limit : 1e300);
-  const SMSO::Optimization_result r =
-    settings.distortion_only
-      ? SMSO::minimize_distortion(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
-                                                           SMSO_np::maximum_number_of_iterations(settings.max_iterations),
-                                                           SMSO_np::edge_is_seam_map(seams)))
-      : SMSO::optimize_seams(sm, uv, SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
-                                                      SMSO_np::maximum_number_of_iterations(settings.max_iterations),
-                                                      SMSO_np::edge_is_seam_map(seams),
-                                                      SMSO_np::visitor(std::ref(visitor))));
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+  const SMSO::Optimization_result r = settings.cholmod
+    ? optimize<SMSO::Cholmod_traits>(sm, uv, seams, settings, visitor)
+    : optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor);
+#else
+  const SMSO::Optimization_result r = optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor);
+#endif
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.status = SMSO::get_error_code_name(r.status);
   if(!r.has_result())
@@ -156,13 +188,14 @@ static Row run(const std::string& file, const Settings& settings)
 static int usage(const char* argv0)
 {
   std::cerr << "usage: " << argv0
-            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S] [--distortion-only]"
+            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S] [--distortion-only] [--solver S]"
                " [--no-header] mesh.obj ...\n"
                "  --bound B           distortion bound on E_SD (default 4.1)\n"
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
                "  --max-iterations N  cap on Newton iterations (default 100000)\n"
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
+               "  --solver S          ldlt (Eigen SimplicialLDLT, the default) or cholmod (if built with it)\n"
                "  --no-header         do not print the CSV header line\n";
   return EXIT_FAILURE;
 }
@@ -184,6 +217,15 @@ int main(int argc, char** argv)
       if(!(settings.time_limit > 0)) return usage(argv[0]);
     }
     else if(a == "--distortion-only") settings.distortion_only = true;
+    else if(a == "--solver" && i + 1 < argc)
+    {
+      const std::string solver = argv[++i];
+      settings.cholmod = (solver == "cholmod");
+#ifndef CGAL_SMSO_HAS_CHOLMOD
+      if(settings.cholmod) { std::cerr << "built without CHOLMOD\n"; return EXIT_FAILURE; }
+#endif
+      if(!settings.cholmod && solver != "ldlt") return usage(argv[0]);
+    }
     else if(a == "--no-header") header = false;
     else if(a == "-h" || a == "--help") { usage(argv[0]); return EXIT_SUCCESS; }
     else if(!a.empty() && a[0] == '-') return usage(argv[0]);
@@ -198,7 +240,7 @@ int main(int argc, char** argv)
 
   if(header)
     std::printf("mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,charts,"
-                "flipped_triangles,peak_mb,status,bound_met,lambda\n");
+                "flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds\n");
   for(const std::string& file : files)
   {
     Row row;
