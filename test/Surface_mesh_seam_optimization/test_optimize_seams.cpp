@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 
 #include <string>
 #include <vector>
@@ -62,6 +63,10 @@ void check_valid(const Run& r)
   BOOST_TEST(implied.status == SMSO::OK);
   BOOST_TEST(implied.flipped_triangles == 0u);
   BOOST_TEST(implied.charts == 1u);
+  // bijective by default: no chart crosses another or itself
+  BOOST_TEST(implied.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(r.result.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(r.result.bijective);
   BOOST_TEST(declared.charts == 1u);
   BOOST_TEST(std::abs(implied.seam_length - declared.seam_length) <= 1e-12 * (1 + declared.seam_length));
   BOOST_TEST(std::abs(implied.distortion - r.result.distortion) <= 1e-9 * r.result.distortion);
@@ -270,4 +275,119 @@ BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)
   SMSO::Seam_optimizer<Surface_mesh> refused(bad, buv);
   BOOST_TEST(refused.status() == SMSO::ERROR_EMPTY_MESH);
   BOOST_TEST(!refused.step());
+}
+
+BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
+{
+  // The bishop's flattening folds over itself unless the space around the
+  // chart is meshed.
+  Run free_run, bijective_run;
+  run("bishop_part_f1000.obj", free_run, SMSO_np::combine(SMSO_np::distortion_bound(4.1), SMSO_np::bijective(false)));
+  BOOST_TEST(free_run.result.status == SMSO::OK);
+  BOOST_TEST(free_run.result.overlapping_triangle_pairs > 0u);
+  BOOST_TEST(!free_run.result.bijective);
+  BOOST_TEST(SMSO::number_of_overlapping_triangle_pairs(free_run.sm, free_run.uv) ==
+             free_run.result.overlapping_triangle_pairs);
+  BOOST_TEST(!SMSO::is_bijective(free_run.sm, free_run.uv));
+  BOOST_TEST(SMSO::number_of_flipped_triangles(free_run.sm, free_run.uv) == 0u);
+
+  run("bishop_part_f1000.obj", bijective_run, SMSO_np::distortion_bound(4.1));
+  BOOST_TEST(bijective_run.result.status == SMSO::OK);
+  BOOST_TEST(bijective_run.result.distortion <= 4.1);
+  BOOST_TEST(bijective_run.result.scaffold_rebuilds > 0u);
+  BOOST_TEST(SMSO::is_bijective(bijective_run.sm, bijective_run.uv));
+  check_valid(bijective_run);
+
+  // An overlapping map given as the initial one is refused in bijective
+  // mode, and left as it was; without bijectivity it is a fine start.
+  std::vector<Point_2> before;
+  for(halfedge_descriptor h : free_run.sm.halfedges()) before.push_back(free_run.uv[h]);
+  const SMSO::Optimization_result refused = SMSO::optimize_seams(
+    free_run.sm, free_run.uv, SMSO_np::combine(SMSO_np::use_uv_map_as_initial(true),
+                                               SMSO_np::edge_is_seam_map(free_run.seam)));
+  BOOST_TEST(refused.status == SMSO::ERROR_OVERLAPPING_UV_MAP);
+  BOOST_TEST(!refused.has_result());
+  std::size_t i = 0;
+  bool untouched = true;
+  for(halfedge_descriptor h : free_run.sm.halfedges()) untouched = untouched && free_run.uv[h] == before[i++];
+  BOOST_TEST(untouched);
+  const SMSO::Optimization_result accepted = SMSO::optimize_seams(
+    free_run.sm, free_run.uv, SMSO_np::combine(SMSO_np::use_uv_map_as_initial(true), SMSO_np::bijective(false),
+                                               SMSO_np::edge_is_seam_map(free_run.seam)));
+  BOOST_TEST(accepted.status == SMSO::OK);
+}
+
+BOOST_AUTO_TEST_CASE(is_bijective_on_hand_made_maps)
+{
+  // Two triangles sharing an edge; the second folded back over the first
+  // overlaps it without flipping if its UVs are given separately.
+  Surface_mesh sm;
+  const auto v0 = sm.add_vertex(K::Point_3(0, 0, 0)), v1 = sm.add_vertex(K::Point_3(1, 0, 0)),
+             v2 = sm.add_vertex(K::Point_3(0, 1, 0)), v3 = sm.add_vertex(K::Point_3(1, 1, 0));
+  sm.add_face(v0, v1, v2);
+  sm.add_face(v1, v3, v2);
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  for(halfedge_descriptor h : sm.halfedges())
+    if(!sm.is_border(h)) { const K::Point_3& p = sm.point(sm.target(h)); uv[h] = Point_2(p.x(), p.y()); }
+  BOOST_TEST(SMSO::is_bijective(sm, uv));
+  BOOST_TEST(SMSO::number_of_overlapping_triangle_pairs(sm, uv) == 0u);
+  // cut the shared edge in UV: move the second triangle onto the first
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(sm.halfedge(Surface_mesh::Face_index(1)), sm))
+    uv[h] = Point_2(uv[h].x() - 0.5, uv[h].y() - 0.5);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+  BOOST_TEST(SMSO::number_of_overlapping_triangle_pairs(sm, uv) == 1u);
+  BOOST_TEST(!SMSO::is_bijective(sm, uv));
+  // apart: bijective again
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(sm.halfedge(Surface_mesh::Face_index(1)), sm))
+    uv[h] = Point_2(uv[h].x() + 3, uv[h].y());
+  BOOST_TEST(SMSO::is_bijective(sm, uv));
+}
+
+BOOST_AUTO_TEST_CASE(the_scaffold_fills_the_box_around_the_charts)
+{
+  // Charts and scaffold tile the box: every scaffold triangle is ccw, and
+  // the areas add up to the box's.
+  Run r;
+  run("cat_f1500.obj", r, SMSO_np::distortion_bound(4.1));
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(r.sm, get(CGAL::vertex_point, r.sm), cm, copy, msg) == SMSO::OK);
+  std::vector<double> corner_uvs;
+  BOOST_REQUIRE(SMSO::internal::read_uv_map(r.sm, r.uv, copy, corner_uvs, msg) == SMSO::OK);
+  std::vector<char> seam;
+  SMSO::internal::seams_from_corner_uvs(cm, corner_uvs, seam);
+  SMSO::internal::label_uv_vertices(cm, seam);
+  SMSO::internal::set_uvs_from_corners(cm, corner_uvs);
+  SMSO::internal::Scaffold scaffold;
+  BOOST_REQUIRE(scaffold.build(cm));
+  BOOST_TEST(scaffold.number_of_triangles() > 0u);
+  double scaffold_area = 0, chart_area = 0;
+  double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
+  std::size_t clockwise = 0;
+  for(std::size_t t = 0; t < scaffold.number_of_triangles(); ++t)
+  {
+    const double* p[3];
+    for(int k = 0; k < 3; ++k) p[k] = scaffold.position(cm, scaffold.tri[3*t + k]);
+    const double a2 = (p[1][0]-p[0][0]) * (p[2][1]-p[0][1]) - (p[2][0]-p[0][0]) * (p[1][1]-p[0][1]);
+    if(!(a2 > 0)) ++clockwise;
+    scaffold_area += 0.5 * a2;
+    for(int k = 0; k < 3; ++k)
+    {
+      x0 = (std::min)(x0, p[k][0]); x1 = (std::max)(x1, p[k][0]);
+      y0 = (std::min)(y0, p[k][1]); y1 = (std::max)(y1, p[k][1]);
+    }
+  }
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) chart_area += 0.5 * cm.signed_uv_area2(f);
+  BOOST_TEST(clockwise == 0u);
+  BOOST_TEST(std::abs(scaffold_area + chart_area - (x1 - x0) * (y1 - y0)) <= 1e-9 * (x1 - x0) * (y1 - y0));
+  // the scaffold vertex incidence lists every triangle at each chart vertex
+  std::size_t incidences = 0;
+  for(int id : scaffold.tri) if(id < scaffold.n_uv) ++incidences;
+  BOOST_TEST(scaffold.vertex_triangles.size() == incidences);
+
+  // a map whose charts overlap has no scaffold
+  cm.uv[2 * cm.corner_uv[0]] += 1e3;
+  BOOST_TEST(!scaffold.build(cm));
+  BOOST_TEST(scaffold.empty());
 }

@@ -29,7 +29,8 @@ enum Error_code
   ERROR_FLIPPED_UV_TRIANGLE,         ///< the given UV map has a flipped or degenerate triangle
   ERROR_INITIAL_PARAMETERIZATION,    ///< no valid initial map could be computed
   ERROR_LINEAR_SOLVER,               ///< the sparse linear solver failed
-  ERROR_WRONG_PARAMETER              ///< a named parameter has an invalid value
+  ERROR_WRONG_PARAMETER,             ///< a named parameter has an invalid value
+  ERROR_OVERLAPPING_UV_MAP           ///< `bijective` was asked for, but the given UV map overlaps itself
 };
 
 /// true when the code means that a result was written
@@ -59,6 +60,7 @@ inline const char* get_error_message(Error_code code)
     case ERROR_INITIAL_PARAMETERIZATION: return "The initial parameterization failed";
     case ERROR_LINEAR_SOLVER: return "The sparse linear solver failed";
     case ERROR_WRONG_PARAMETER: return "A parameter has an invalid value";
+    case ERROR_OVERLAPPING_UV_MAP: return "The given UV map overlaps itself (pass bijective(false) to accept it)";
   }
   return "Unknown error";
 }
@@ -83,6 +85,7 @@ inline const char* get_error_code_name(Error_code code)
     case ERROR_INITIAL_PARAMETERIZATION: return "ERROR_INITIAL_PARAMETERIZATION";
     case ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
     case ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
+    case ERROR_OVERLAPPING_UV_MAP: return "ERROR_OVERLAPPING_UV_MAP";
   }
   return "ERROR_UNKNOWN";
 }

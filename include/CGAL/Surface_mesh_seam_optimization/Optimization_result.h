@@ -28,6 +28,9 @@ struct Optimization_result
   std::size_t iterations = 0;       ///< Newton iterations
   std::size_t topology_operations = 0;
   bool bound_met = false;
+  std::size_t overlapping_triangle_pairs = 0; ///< checked on the result, whether `bijective` was asked for or not
+  bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
+  std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
   double seconds = 0;
 
   bool has_result() const { return Surface_mesh_seam_optimization::has_result(status); }

@@ -50,6 +50,7 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   // Stationary points between topology steps need not be polished: a looser
   // decrease test saves Newton iterations at no cost in seam length.
   settings.newton.relative_decrease_tolerance = 3e-6;
+  settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
   settings.max_iterations =
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
 
@@ -155,6 +156,7 @@ public:
     r.lambda = m_core->lambda();
     r.iterations = m_core->iterations();
     r.topology_operations = m_core->topology_operations();
+    r.scaffold_rebuilds = m_core->scaffold_rebuilds();
     r.bound_met = m_settings.fixed_lambda ? false : r.distortion <= m_settings.distortion_bound;
     r.seconds = m_timer.time();
     return r;

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Overlap.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 
 #include <limits>
@@ -30,6 +31,12 @@ struct Uv_map_measures
   double seam_length_normalized = 0; ///< seam_length / sqrt(area / pi)
   std::size_t flipped_triangles = 0; ///< UV triangles with non-positive signed area
   std::size_t charts = 0;          ///< faces joined across non-seam edges
+  /// pairs of UV triangles (of any charts) whose interiors overlap by more
+  /// than 1e-9 times the UV bounding box diagonal; sharing or touching a
+  /// vertex or an edge is not an overlap
+  std::size_t overlapping_triangle_pairs = 0;
+  /// no flipped triangle and no overlapping pair: the map is globally injective
+  bool is_bijective() const { return status == OK && flipped_triangles == 0 && overlapping_triangle_pairs == 0; }
 };
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
@@ -72,6 +79,7 @@ Uv_map_measures measure_uv_map(const TriangleMesh& tm, UVMap uvmap,
   m.seam_length_normalized = m.seam_length / cm.normalization_radius();
   std::vector<int> chart;
   m.charts = cm.compute_charts(chart);
+  m.overlapping_triangle_pairs = internal::count_overlapping_pairs(cm);
   return m;
 }
 
@@ -103,6 +111,28 @@ std::size_t number_of_flipped_triangles(const TriangleMesh& tm, UVMap uvmap,
                                         const NamedParameters& np = parameters::default_values())
 {
   return measure_uv_map(tm, uvmap, np).flipped_triangles;
+}
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Number of pairs of UV triangles whose interiors overlap (see
+/// `Uv_map_measures::overlapping_triangle_pairs`), any two charts or within one.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t number_of_overlapping_triangle_pairs(const TriangleMesh& tm, UVMap uvmap,
+                                                 const NamedParameters& np = parameters::default_values())
+{
+  return measure_uv_map(tm, uvmap, np).overlapping_triangle_pairs;
+}
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Whether a UV map is globally injective: valid, no flipped triangle and no
+/// overlapping pair of triangles. Use it, e.g., to validate an initial map
+/// before `optimize_seams()` with `use_uv_map_as_initial(true)`.
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+bool is_bijective(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
+{
+  return measure_uv_map(tm, uvmap, np).is_bijective();
 }
 
 } // namespace Surface_mesh_seam_optimization

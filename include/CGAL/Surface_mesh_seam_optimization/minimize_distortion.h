@@ -32,6 +32,11 @@ inline void measure_result(const Cut_mesh& cm, Optimization_result& r)
   r.seam_length_normalized = r.seam_length / cm.normalization_radius();
   std::vector<int> chart;
   r.charts = cm.compute_charts(chart);
+  r.overlapping_triangle_pairs = count_overlapping_pairs(cm);
+  std::size_t flipped = 0;
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+    if(!(cm.signed_uv_area2(f) > 0)) ++flipped;
+  r.bijective = flipped == 0 && r.overlapping_triangle_pairs == 0;
 }
 
 // Builds the core mesh with its initial UVs: the user's map, or a computed

@@ -37,7 +37,9 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamDefault{none (bound mode)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{bijective}
-///     \cgalParamDescription{prevent overlaps with a scaffold (not implemented yet: the value is accepted and ignored)}
+///     \cgalParamDescription{keep the charts from overlapping one another or themselves: the space between
+///       them is meshed (a scaffold) and no triangle of charts or scaffold may flip.
+///       With `use_uv_map_as_initial`, the given map must then be bijective (else `ERROR_OVERLAPPING_UV_MAP`)}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_seam_map}
@@ -119,6 +121,7 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   result.lambda = optimizer.lambda();
   result.iterations = optimizer.iterations();
   result.topology_operations = optimizer.topology_operations();
+  result.scaffold_rebuilds = optimizer.scaffold_rebuilds();
   result.bound_met = result.distortion <= settings.distortion_bound;
   result.seconds = timer.time();
   return result;

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 #include <CGAL/Real_timer.h>
@@ -43,6 +44,7 @@ struct Alternating_settings
   double lambda = 0.999;            // initial (bound mode) or fixed value
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
   std::size_t max_iterations = 100000;
+  bool bijective = false;           // scaffold around the charts
   Newton_settings newton;
 };
 
@@ -78,9 +80,17 @@ public:
   // Pattern analysis and descent to the first stationary point.
   Error_code start()
   {
+    if(m_settings.bijective)
+    {
+      if(!m_scaffold.build(m_cm)) return ERROR_OVERLAPPING_UV_MAP;
+      m_newton.set_scaffold(&m_scaffold);
+      m_topology.set_scaffold(&m_scaffold);
+    }
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     return descend();
   }
+
+  std::size_t scaffold_rebuilds() const { return m_scaffold_rebuilds; }
 
   // One alternation from a stationary point: stopping tests, dual update,
   // topology operation, descent. False when the optimization is over;
@@ -115,11 +125,15 @@ public:
       if(m_cancelled) status = WARNING_CANCELLED;
       return false;
     }
-    const Operation* best = nullptr;
-    for(const Operation& op : ops)
-      if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
-    if(!best || !(best->weighted(m_lambda) < 0)) return false; // stationary in topology too
-    apply(*best);
+    // the most profitable operation that keeps the map bijective
+    std::vector<std::pair<double, std::size_t> > order;
+    for(std::size_t i = 0; i < ops.size(); ++i)
+      if(ops[i].weighted(m_lambda) < 0) order.emplace_back(ops[i].weighted(m_lambda), i);
+    std::sort(order.begin(), order.end());
+    bool applied = false;
+    for(const auto& o : order)
+      if((applied = apply(ops[o.second]))) break;
+    if(!applied) return false; // stationary in topology too
     if(m_cancelled) { status = WARNING_CANCELLED; return false; }
     status = descend();
     return status == OK;
@@ -162,6 +176,13 @@ private:
       if(m_newton.iterations() >= m_settings.max_iterations) return WARNING_MAXIMUM_ITERATIONS;
       const Newton_status s = m_newton.step();
       if(s == NEWTON_SOLVER_FAILED) return ERROR_LINEAR_SOLVER;
+      // a squeezed scaffold blocks the charts' motion: mesh the space anew
+      if(m_newton.has_scaffold() && m_scaffold.max_density_growth(scaffold_positions()) > m_scaffold.rebuild_threshold)
+      {
+        if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
+        if(s == NEWTON_CONVERGED && !m_rebuilt_at_convergence) { m_rebuilt_at_convergence = true; continue; }
+      }
+      m_rebuilt_at_convergence = false;
       if(!m_visitor.on_iteration(progress())) return WARNING_CANCELLED;
       const bool propagated = propagate(s == NEWTON_CONVERGED ? 0. : (1 - m_lambda) * m_newton.last_decrease());
       if(m_cancelled) return WARNING_CANCELLED;
@@ -186,7 +207,7 @@ private:
       if(best && best->weighted(m_lambda) < 0 && -best->weighted(m_lambda) > newton_gain)
       {
         const int next_tip = best->tips.front();
-        apply(*best);
+        if(!apply(*best)) continue;
         m_tips.push_back(next_tip);
         any = true;
       }
@@ -215,29 +236,63 @@ private:
       const std::vector<int> corner_uv = m_cm.corner_uv, uv_vertex = m_cm.uv_vertex;
       const std::vector<double> uv = m_cm.uv;
       const std::pair<int, int> tried(best->uv_a, best->uv_b);
-      apply(*best);
+      if(!apply(*best)) { failed.push_back(tried); ++failures; continue; }
       if(m_cancelled) return WARNING_CANCELLED;
       const Error_code status = descend();
       if(status != OK) return status;
       const double e_sd = distortion();
       if(e_sd <= b) { record(e_sd, seam_cost()); failed.clear(); continue; }
       m_cm.corner_uv = corner_uv; m_cm.uv_vertex = uv_vertex; m_cm.uv = uv;
-      m_newton.rebuild_pattern();
+      if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
       failed.push_back(tried);
       ++failures;
     }
     return OK;
   }
 
-  void apply(const Operation& op)
+  // Applies op; with a scaffold, an op whose result would overlap is undone
+  // (false).
+  bool apply(const Operation& op)
   {
+    std::vector<int> corner_uv, uv_vertex;
+    std::vector<double> uv;
+    if(m_settings.bijective) { corner_uv = m_cm.corner_uv; uv_vertex = m_cm.uv_vertex; uv = m_cm.uv; }
     Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
+    if(m_settings.bijective && !m_scaffold.build(m_cm))
+    {
+      m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
+      m_scaffold.build(m_cm);
+      m_newton.rebuild_pattern();
+      ++m_rejected;
+      return false;
+    }
     ++m_operations;
     if(op.type != CORNER_MERGE)
       for(int t : op.tips) m_tips.push_back(t);
     m_newton.rebuild_pattern();
     if(!m_visitor.on_topology_operation(progress())) m_cancelled = true;
+    return true;
+  }
+
+  // Scaffold positions live in the scaffold; Newton's unified vector is
+  // charts' UVs then scaffold vertices.
+  const double* scaffold_positions()
+  {
+    m_x.resize(m_cm.uv.size() + m_scaffold.pos.size());
+    std::copy(m_cm.uv.begin(), m_cm.uv.end(), m_x.begin());
+    std::copy(m_scaffold.pos.begin(), m_scaffold.pos.end(), m_x.begin() + m_cm.uv.size());
+    return m_x.data();
+  }
+
+  bool rebuild_scaffold()
+  {
+    if(m_settings.bijective)
+    {
+      ++m_scaffold_rebuilds;
+      if(!m_scaffold.build(m_cm)) m_newton.set_scaffold(nullptr); // cannot happen on a bijective map
+    }
+    return m_newton.rebuild_pattern();
   }
 
   // Mean energy density of the faces around each UV vertex, to rank candidates.
@@ -282,6 +337,7 @@ private:
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb), [&](const tbb::blocked_range<std::size_t>& range) {
         std::unique_ptr<Topology_step<Energy> >& local = m_thread_topology.local();
         if(!local) local.reset(new Topology_step<Energy>(m_cm, m_energy, m_weight));
+        local->set_scaffold(m_settings.bijective ? &m_scaffold : nullptr);
         for(std::size_t i = range.begin(); i != range.end(); ++i)
           local->boundary_splits(boundary[i].second, per_vertex[i]);
       });
@@ -376,6 +432,10 @@ private:
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<std::unique_ptr<Topology_step<Energy> > > m_thread_topology;
 #endif
+  Scaffold m_scaffold;
+  std::vector<double> m_x;
+  std::size_t m_scaffold_rebuilds = 0, m_rejected = 0;
+  bool m_rebuilt_at_convergence = false;
   std::vector<int> m_tips;
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;

@@ -4,6 +4,8 @@
 // Projected Newton on the distortion energy of a Cut_mesh with a flip-free
 // backtracking line search. The sparsity pattern is analysed once per UV
 // topology; every iteration only refills the values and refactorizes.
+// With a scaffold, its triangles join the energy (symmetric Dirichlet, tiny
+// weight) and its own vertices the unknowns, after the charts' UV vertices.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
@@ -11,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 
 #include <Eigen/Sparse>
 
@@ -91,15 +94,19 @@ public:
     : m_cm(cm), m_energy(energy), m_solver(solver), m_settings(settings)
   {}
 
-  // Call after any change of the corner -> UV labelling.
+  // The scaffold (or null); call rebuild_pattern() after it changed.
+  void set_scaffold(Scaffold* scaffold) { m_scaffold = scaffold; }
+  bool has_scaffold() const { return m_scaffold && !m_scaffold->empty(); }
+
+  // Call after any change of the corner -> UV labelling or of the scaffold.
   bool rebuild_pattern()
   {
-    const std::size_t nf = m_cm.number_of_faces();
-    const int ndof = int(2 * m_cm.number_of_uv_vertices());
+    const std::size_t ne = number_of_elements();
+    const int ndof = int(2 * m_cm.number_of_uv_vertices() + (has_scaffold() ? m_scaffold->pos.size() : 0));
     std::vector<Eigen::Triplet<double> > triplets;
-    triplets.reserve(21 * nf + ndof);
+    triplets.reserve(21 * ne + ndof);
     int dof[6];
-    for(std::size_t f = 0; f < nf; ++f)
+    for(std::size_t f = 0; f < ne; ++f)
     {
       local_dofs(f, dof);
       for(int p = 0; p < 6; ++p)
@@ -111,8 +118,8 @@ public:
     m_H.setFromTriplets(triplets.begin(), triplets.end());
     m_H.makeCompressed();
 
-    m_entry.resize(21 * nf);
-    for(std::size_t f = 0; f < nf; ++f)
+    m_entry.resize(21 * ne);
+    for(std::size_t f = 0; f < ne; ++f)
     {
       local_dofs(f, dof);
       int k = 0;
@@ -123,10 +130,13 @@ public:
     m_diagonal.resize(ndof);
     for(int d = 0; d < ndof; ++d) m_diagonal[d] = entry_index(d, d);
     m_gradient.resize(ndof);
-    m_energy_value = total_energy(m_cm, m_energy, m_cm.uv.data());
+    load();
+    m_energy_value = total_energy(m_cm, m_energy, m_x.data());
+    m_objective = m_energy_value + (has_scaffold() ? m_scaffold->energy(m_x.data()) : 0.);
     return m_solver.analyze_pattern(m_H);
   }
 
+  // Energy of the charts (without the scaffold's).
   double energy() const { return m_energy_value; }
   double last_step() const { return m_last_step; }
   double last_decrease() const { return m_last_decrease; }
@@ -136,6 +146,7 @@ public:
   // One projected Newton iteration.
   Newton_status step()
   {
+    load();
     const double e0 = assemble();
     const double A = m_cm.total_area;
     m_gradient_norm2 = m_gradient.squaredNorm() * A;
@@ -155,14 +166,16 @@ public:
     double slope = m_gradient.dot(m_direction);
     if(!(slope < 0)) { m_direction = -m_gradient; slope = -m_gradient.squaredNorm(); }
 
-    double t = (std::min)(1., m_settings.flip_free_fraction *
-                                max_flip_free_step(m_cm, m_cm.uv.data(), m_direction.data()));
-    m_trial.resize(m_cm.uv.size());
-    double e = std::numeric_limits<double>::infinity();
+    double t_max = max_flip_free_step(m_cm, m_x.data(), m_direction.data());
+    if(has_scaffold()) t_max = (std::min)(t_max, m_scaffold->max_flip_free_step(m_x.data(), m_direction.data()));
+    double t = (std::min)(1., m_settings.flip_free_fraction * t_max);
+    m_trial.resize(m_x.size());
+    double e = std::numeric_limits<double>::infinity(), e_charts = e;
     for(int k = 0; k < 60; ++k, t *= 0.5)
     {
-      for(std::size_t i = 0; i < m_trial.size(); ++i) m_trial[i] = m_cm.uv[i] + t * m_direction[i];
-      e = total_energy(m_cm, m_energy, m_trial.data());
+      for(std::size_t i = 0; i < m_trial.size(); ++i) m_trial[i] = m_x[i] + t * m_direction[i];
+      e = e_charts = total_energy(m_cm, m_energy, m_trial.data());
+      if(has_scaffold()) e += m_scaffold->energy(m_trial.data());
       if(e <= e0 + m_settings.armijo * t * slope) break;
     }
     ++m_iterations;
@@ -171,22 +184,47 @@ public:
       m_last_step = 0; m_last_decrease = 0;
       return NEWTON_CONVERGED; // the step vanished
     }
-    m_cm.uv.swap(m_trial);
+    m_x.swap(m_trial);
+    store();
     m_last_step = t;
     m_last_decrease = e0 - e;
-    m_energy_value = e;
+    m_energy_value = e_charts;
+    m_objective = e;
     if(m_last_decrease < m_settings.relative_decrease_tolerance * t * e0) return NEWTON_CONVERGED;
     return NEWTON_PROGRESS;
   }
 
 private:
-  void local_dofs(std::size_t f, int* dof) const
+  std::size_t number_of_elements() const
   {
+    return m_cm.number_of_faces() + (has_scaffold() ? m_scaffold->number_of_triangles() : 0);
+  }
+
+  // Unknowns of element e: a face of the charts, then the scaffold's triangles.
+  void local_dofs(std::size_t e, int* dof) const
+  {
+    const std::size_t nf = m_cm.number_of_faces();
+    const int* v = e < nf ? &m_cm.corner_uv[3*e] : &m_scaffold->tri[3*(e - nf)];
     for(int a = 0; a < 3; ++a)
     {
-      dof[2*a] = 2 * m_cm.corner_uv[3*f + a];
+      dof[2*a] = 2 * v[a];
       dof[2*a + 1] = dof[2*a] + 1;
     }
+  }
+
+  // m_x = charts' UVs followed by the scaffold's own vertices.
+  void load()
+  {
+    const std::size_t n = m_cm.uv.size();
+    m_x.resize(n + (has_scaffold() ? m_scaffold->pos.size() : 0));
+    std::copy(m_cm.uv.begin(), m_cm.uv.end(), m_x.begin());
+    if(has_scaffold()) std::copy(m_scaffold->pos.begin(), m_scaffold->pos.end(), m_x.begin() + n);
+  }
+  void store()
+  {
+    const std::size_t n = m_cm.uv.size();
+    std::copy(m_x.begin(), m_x.begin() + n, m_cm.uv.begin());
+    if(has_scaffold()) std::copy(m_x.begin() + n, m_x.end(), m_scaffold->pos.begin());
   }
 
   int entry_index(int row, int col) const
@@ -210,22 +248,38 @@ private:
     double g[6];
     int dof[6];
     double* values = m_H.valuePtr();
-    for(std::size_t f = 0; f < nf; ++f)
-    {
-      face_jacobian(m_cm, f, m_cm.uv.data(), J);
-      const double w = m_cm.face_area[f] * inv_area;
-      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, true);
-      const Jacobian_coefficients k(&m_cm.rest_inverse[4*f]);
-      element_derivatives(k, w, dJ, HJ, g, &H);
-      local_dofs(f, dof);
+    auto add = [&](std::size_t element) {
+      local_dofs(element, dof);
       for(int p = 0; p < 6; ++p) m_gradient[dof[p]] += g[p];
-      const int* entry = &m_entry[21*f];
+      const int* entry = &m_entry[21*element];
       int n = 0;
       for(int p = 0; p < 6; ++p)
         for(int q = 0; q <= p; ++q)
           values[entry[n++]] += H(p, q);
+    };
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      face_jacobian(m_cm, f, m_x.data(), J);
+      const double w = m_cm.face_area[f] * inv_area;
+      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, true);
+      element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), w, dJ, HJ, g, &H);
+      add(f);
     }
     m_energy_value = e;
+    if(has_scaffold())
+    {
+      const Symmetric_Dirichlet_energy sd;
+      const Scaffold& s = *m_scaffold;
+      for(std::size_t t = 0; t < s.number_of_triangles(); ++t)
+      {
+        const int* v = &s.tri[3*t];
+        triangle_jacobian(&m_x[2*v[0]], &m_x[2*v[1]], &m_x[2*v[2]], &s.rest_inverse[4*t], J);
+        e += s.weight[t] * sd.value_gradient_and_hessian(J, dJ, HJ, true);
+        element_derivatives(Jacobian_coefficients(&s.rest_inverse[4*t]), s.weight[t], dJ, HJ, g, &H);
+        add(nf + t);
+      }
+    }
+    m_objective = e;
     return e;
   }
 
@@ -233,6 +287,9 @@ private:
   const Energy& m_energy;
   SolverTraits m_solver;
   Newton_settings m_settings;
+  Scaffold* m_scaffold = nullptr;
+  std::vector<double> m_x;
+  double m_objective = 0;
 
   Matrix m_H;
   std::vector<int> m_entry, m_diagonal;

@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Local_stencil.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Uv_topology.h>
 
 #include <algorithm>
@@ -44,6 +45,9 @@ public:
   {}
 
   const Vertex_corners& vertex_corners() const { return m_vc; }
+
+  // Boundary splits are then scored with the scaffold around the vertex.
+  void set_scaffold(const Scaffold* scaffold) { m_scaffold = scaffold; }
 
   double seam_cost(int h) const { return m_cm.edge_length(h) * m_weight[h] / m_cm.normalization_radius(); }
 
@@ -164,12 +168,67 @@ private:
         m_stencil.local.push_back(ck == c ? (moved ? 1 : 0) : local_id(m_cm.corner_uv[ck]));
       }
     }
+    if(op.type == BOUNDARY_SPLIT && m_scaffold && !m_scaffold->empty()) add_scaffold_ring(op);
     const double before = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
-    const double after = optimize_stencil(m_cm, m_energy, m_stencil, 12);
+    const std::vector<double> start(m_stencil.pos);
+    double after = optimize_stencil(m_cm, m_energy, m_stencil, 12);
     if(!(after < std::numeric_limits<double>::infinity())) return false;
+    if(m_scaffold && !m_scaffold->empty() && !opened_without_overlap(start, after)) return false;
     op.d_sd = after - before;
     std::copy(m_stencil.pos.begin(), m_stencil.pos.begin() + 4, op.new_u);
     return true;
+  }
+
+  // The two sides of the new seam may not cross each other: back off towards
+  // the start while the stencil's faces overlap (nothing else can be
+  // crossed: the faces and the scaffold ring do not flip).
+  bool opened_without_overlap(const std::vector<double>& start, double& after)
+  {
+    const std::vector<double> end(m_stencil.pos);
+    for(double t = 1.; t > 1e-3; t *= 0.5)
+    {
+      for(std::size_t i = 0; i < 4; ++i) m_stencil.pos[i] = start[i] + t * (end[i] - start[i]);
+      if(count_overlapping_pairs(m_stencil.local, m_stencil.pos.data(), 1) == 0)
+      {
+        if(t < 1.) after = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
+        return true;
+      }
+    }
+    return false;
+  }
+
+  int local_scaffold_id(int id)
+  {
+    if(id < m_scaffold->n_uv) return local_id(id);
+    const int key = -3 - (id - m_scaffold->n_uv); // apart from UV ids and the new vertex (-2)
+    for(std::size_t k = 0; k < m_ids.size(); ++k) if(m_ids[k] == key) return int(k);
+    m_ids.push_back(key);
+    const double* p = m_scaffold->position(m_cm, id);
+    m_stencil.add_vertex(p[0], p[1]);
+    return int(m_ids.size()) - 1;
+  }
+
+  // The scaffold triangles around the split vertex (the empty wedge between
+  // its two boundary edges) bound both copies: each gets its own copy of
+  // them, at half weight, so that neither can cross into another chart.
+  void add_scaffold_ring(const Operation& op)
+  {
+    const Scaffold& sc = *m_scaffold;
+    const int a = op.uv_a;
+    if(a >= sc.n_uv) return;
+    for(int copy = 0; copy < 2; ++copy)
+      for(int k = sc.vertex_offset[a]; k < sc.vertex_offset[a + 1]; ++k)
+      {
+        const int t = sc.vertex_triangles[k];
+        for(int j = 0; j < 3; ++j)
+        {
+          const int id = sc.tri[3*t + j];
+          m_stencil.extra_local.push_back(id == a ? copy : local_scaffold_id(id));
+        }
+        m_stencil.extra_rest_inverse.insert(m_stencil.extra_rest_inverse.end(),
+                                            &sc.rest_inverse[4*t], &sc.rest_inverse[4*t] + 4);
+        m_stencil.extra_weight.push_back(0.5 * sc.weight[t]);
+      }
   }
 
   // Stencil = faces of both fans; free: the merged vertex, started at the
@@ -229,6 +288,7 @@ private:
   const Energy& m_energy;
   Vertex_corners m_vc;
   const std::vector<double>& m_weight;
+  const Scaffold* m_scaffold = nullptr;
   Local_stencil m_stencil;
   std::vector<int> m_ids, m_fan;
 };
