@@ -2,12 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // optimize_seams: command-line front end of Surface_mesh_seam_optimization.
-// A thin shell: parse options, load and check the mesh, call the library,
-// write the OBJ and the JSON report. Every failure is one line on stderr and
-// a non-zero exit code (1: input or run failed, 2: bad options).
+// A thin shell: parse options, load, check (or repair) the mesh, call the
+// library (run_optimization.h), write the OBJ, the pictures and the JSON
+// report. Every failure is one line on stderr and a non-zero exit code
+// (1: input or run failed, 2: bad options).
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include "pictures.h"
+#include "repair_input.h"
+#include "run_optimization.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -19,9 +21,11 @@
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
-#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
-#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
-#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <memory>
+#endif
 
 #include <algorithm>
 #include <cctype>
@@ -47,16 +51,8 @@
 
 namespace {
 
-namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+using namespace optimize_seams_cli;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
-typedef Kernel::Point_2                                     Point_2;
-typedef Kernel::Point_3                                     Point_3;
-typedef CGAL::Surface_mesh<Point_3>                         Mesh;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor      halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::edge_descriptor          edge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor          face_descriptor;
 
 const char* const program_name = "optimize_seams";
 
@@ -67,10 +63,6 @@ enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
 const std::size_t default_max_iterations_seams = 100000;   // optimize_seams()
 const std::size_t default_max_iterations_keep = 10000;     // minimize_distortion()
 const double default_distortion_bound = 4.1;
-
-// What the run does: the bound mode (OptCuts, the default), a fixed seam
-// weight (no dual step), or the distortion-only mode with the seams kept.
-enum class Mode { DISTORTION_BOUND, SEAM_WEIGHT, KEEP_SEAMS };
 
 const char* mode_name(Mode m)
 {
@@ -83,8 +75,22 @@ const char* mode_name(Mode m)
   return "unknown";
 }
 
-const char* const bijectivity_note =
-  "global bijectivity (the scaffold) is not implemented yet: charts may overlap in UV space";
+// --energy names, in the order of Energy_kind.
+const char* const energy_names[] = {"symmetric_dirichlet", "arap", "mips"};
+
+const char* energy_name(Energy_kind e) { return energy_names[static_cast<int>(e)]; }
+
+bool parse_energy(const std::string& s, Energy_kind& e)
+{
+  for(int i = 0; i < 3; ++i)
+    if(s == energy_names[i])
+    {
+      e = static_cast<Energy_kind>(i);
+      return true;
+    }
+  return false;
+}
+
 
 // ---------------------------------------------------------------------------
 // Options
@@ -96,7 +102,7 @@ struct Options
   std::string report;          // empty: no JSON report
   bool keep_seams = false;
   bool quiet = false;
-  bool no_bijectivity = false;            // accepted; the only behavior until the scaffold lands
+  bool no_bijectivity = false;            // bijective(false): no scaffold, charts may overlap
   bool has_distortion_bound = false;
   double distortion_bound = default_distortion_bound;
   bool has_seam_weight = false;
@@ -106,6 +112,11 @@ struct Options
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
   double time_limit = 0;                  // seconds; 0: none
+  Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  std::size_t threads = 0;                // 0: TBB's default (all cores)
+  bool repair = false;                    // repair the input instead of refusing it
+  std::string svg;                        // empty: no UV layout picture
+  std::string png;                        // empty: no rendering
 
   Mode mode() const
   {
@@ -131,13 +142,20 @@ void print_help(std::ostream& os)
      << "\n"
      << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
      << "                          three corners are triangulated (a note says so); a\n"
-     << "                          non-manifold mesh or a zero-area triangle is an error.\n"
+     << "                          non-manifold mesh or a zero-area triangle is an error\n"
+     << "                          (see --repair).\n"
      << "                          Each connected component must be a topological disk or\n"
      << "                          closed of genus 0 (then first cut open by a short slit).\n"
      << "\n"
      << "Options:\n"
      << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
      << "                          \"_uv.obj\", in the current directory)\n"
+     << "  --repair                repair the input first (CGAL Polygon_mesh_processing):\n"
+     << "                          merge duplicate points, drop repeated corners, faces with\n"
+     << "                          fewer than 3 corners, duplicate faces and unused points,\n"
+     << "                          orient the faces (duplicating points at non-manifold edges\n"
+     << "                          and vertices), remove zero-area faces; what changed is\n"
+     << "                          one stderr line and \"repair\" in the report (default: off)\n"
      << "  --use-input-uv          start from the input's own UV map (an OBJ with a vt for\n"
      << "                          every face corner, no flipped triangle) instead of\n"
      << "                          computing one; its seams are those of the map\n"
@@ -151,24 +169,42 @@ void print_help(std::ostream& os)
      << "  --seam-weight L         a fixed seam weight lambda in [0, 1) instead of the bound:\n"
      << "                          minimize (1 - L) E_SD + L E_seam, no bound (default: off;\n"
      << "                          not with --distortion-bound)\n"
-     << "  --no-bijectivity        do not prevent overlaps between charts. Global bijectivity\n"
-     << "                          (the scaffold) is not implemented yet, so this is the only\n"
-     << "                          behavior for now, with or without the option: results may\n"
-     << "                          overlap in UV space (default: off)\n"
+     << "  --no-bijectivity        do not keep charts from overlapping each other or\n"
+     << "                          themselves in UV space (no scaffold): faster, and seams\n"
+     << "                          may be shorter, but the map may not be usable as a\n"
+     << "                          texture; the report says whether it overlaps (default:\n"
+     << "                          off: the result is globally bijective)\n"
      << "  --keep-seams            keep the input's seams (none for a disk; a closed genus-0\n"
      << "                          mesh is cut by a two-edge slit) and only minimize\n"
      << "                          distortion: the previous distortion-only mode (default: off)\n"
+     << "  --energy NAME           distortion energy the descent minimizes: symmetric_dirichlet,\n"
+     << "                          arap or mips; the bound always applies to E_SD, which the\n"
+     << "                          report gives in all cases (default: symmetric_dirichlet)\n"
      << "  --max-iterations N      cap on Newton iterations (default: "
      << default_max_iterations_seams << ", or " << default_max_iterations_keep
      << " with --keep-seams)\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
      << "                          write the best result so far (status WARNING_CANCELLED,\n"
      << "                          exit 0); not with --keep-seams (default: none)\n"
+     << "  --threads N             use at most N threads (N >= 1; the result does not depend\n"
+     << "                          on it)"
+#ifdef CGAL_LINKED_WITH_TBB
+     << " (default: all cores)\n"
+#else
+     << "; built without TBB: always one thread (default: 1)\n"
+#endif
+     << "  --svg OUT.svg           draw the UV layout: triangles colored by their distortion,\n"
+     << "                          seams, legend and figures (default: none)\n"
+     << "  --png OUT.png           render the 3D model with a checkerboard through the UV map\n"
+     << "                          and the seams drawn on it, 600x600"
+     << (png_supported() ? "" : "; NOT AVAILABLE: built without libpng") << " (default: none)\n"
      << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
      << "                          initial_e_sd, distortion_bound, bound_met, seam_weight,\n"
      << "                          lambda, seam_length, seam_length_normalized, charts,\n"
-     << "                          iterations, topology_operations, bijective, notes, seconds,\n"
-     << "                          faces, vertices, input, output (default: no report)\n"
+     << "                          iterations, topology_operations, bijective,\n"
+     << "                          overlapping_triangle_pairs, scaffold_rebuilds, energy,\n"
+     << "                          threads, repair, notes, seconds, faces, vertices, input,\n"
+     << "                          output, svg, png (default: no report)\n"
      << "  --quiet                 no progress, summary or notes on stderr; errors are still\n"
      << "                          printed (default: off)\n"
      << "  -h, --help              print this help and exit\n"
@@ -274,6 +310,49 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
       if(!take_value(options.report))
         return Parse_status::ERROR;
     }
+    else if(name == "--svg")
+    {
+      if(!take_value(options.svg))
+        return Parse_status::ERROR;
+    }
+    else if(name == "--png")
+    {
+      if(!take_value(options.png))
+        return Parse_status::ERROR;
+      if(!png_supported())
+      {
+        error = "option '--png' is not available: optimize_seams was built without libpng";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(name == "--repair")
+    {
+      if(!no_value())
+        return Parse_status::ERROR;
+      options.repair = true;
+    }
+    else if(name == "--energy")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_energy(s, options.energy))
+      {
+        error = "option '--energy' needs symmetric_dirichlet, arap or mips, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(name == "--threads")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.threads) || options.threads < 1 || options.threads > 4096)
+      {
+        error = "option '--threads' needs an integer from 1 to 4096, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
     else if(name == "--keep-seams")
     {
       if(!no_value())
@@ -373,6 +452,11 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
     error = "option '--time-limit' is not supported with '--keep-seams' (that mode cannot be stopped early)";
     return Parse_status::ERROR;
   }
+  if(options.use_input_uv && options.repair)
+  {
+    error = "options '--use-input-uv' and '--repair' are exclusive (a repair would not keep the input's UVs)";
+    return Parse_status::ERROR;
+  }
   if(options.input.empty())
   {
     error = "missing INPUT";
@@ -394,7 +478,12 @@ struct Run_report
   double seam_weight = 0;                               // seam-weight mode only
   std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
   bool normalized = false;                              // --normalize applied to the written UVs
-  std::string input, output;
+  Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  std::size_t threads = 0;                              // --threads; 0: default
+  bool repair = false;                                  // --repair asked
+  bool repair_done = false;                             // and reached (the file was read)
+  Repair_summary repair_summary;
+  std::string input, output, svg, png;                  // svg, png: written pictures
   std::size_t faces = 0, vertices = 0;
   double seconds = 0;                    // the optimization call
   double total_seconds = 0;              // reading + optimization + writing
@@ -466,7 +555,32 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("iterations", std::to_string(res.iterations));
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
   fields.emplace_back("normalized", r.normalized ? "true" : "false");
-  fields.emplace_back("bijective", "false");   // no scaffold yet, whatever --no-bijectivity says
+  // Checked on the result (no flip, no overlapping pair), not assumed from the option.
+  fields.emplace_back("bijective", !ran ? "null" : (res.bijective ? "true" : "false"));
+  fields.emplace_back("overlapping_triangle_pairs", !ran ? "null" : std::to_string(res.overlapping_triangle_pairs));
+  fields.emplace_back("scaffold_rebuilds", std::to_string(res.scaffold_rebuilds));
+  fields.emplace_back("energy", str(energy_name(r.energy)));
+  fields.emplace_back("threads", r.threads > 0 ? std::to_string(r.threads) : "null");
+  if(!r.repair)
+    fields.emplace_back("repair", "null");
+  else
+  {
+    // What the repair changed, kind by kind (null when the file could not be read).
+    std::string o = "null";
+    if(r.repair_done)
+    {
+      o = "{";
+      const auto items = r.repair_summary.items();
+      for(std::size_t i = 0; i < items.size(); ++i)
+        o += (i ? ", " : "") + str(items[i].first) + ": " +
+             (items[i].first == "reoriented" ? (items[i].second ? "true" : "false")
+                                             : std::to_string(items[i].second));
+      o += ", " + str("description") + ": " + str(r.repair_summary.description()) + "}";
+    }
+    fields.emplace_back("repair", o);
+  }
+  fields.emplace_back("svg", r.svg.empty() ? "null" : str(r.svg));
+  fields.emplace_back("png", r.png.empty() ? "null" : str(r.png));
   {
     std::string notes = "[";
     for(std::size_t i = 0; i < r.notes.size(); ++i)
@@ -515,11 +629,15 @@ Load_failure code_failure(SMSO::Error_code code, const std::string& line)
 }
 
 // Reads a polygon soup (so that defects can be named, where read_polygon_mesh
-// would only say "false"), checks it, and builds a triangle mesh.
-// Returns true on success; otherwise `failure` says why.
+// would only say "false"), checks it, and builds a triangle mesh. With
+// `repair`, fixes what Polygon_mesh_processing can fix instead of refusing
+// it, and counts the changes in `repair`. Returns true on success; otherwise
+// `failure` says why.
 bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& notes,
-               Load_failure& failure)
+               Load_failure& failure, Repair_summary* repair = nullptr)
 {
+  // What an error line adds when --repair would have fixed the defect.
+  const std::string try_repair = repair ? "" : " (--repair fixes this)";
   std::error_code ec;
   if(!std::filesystem::exists(path, ec))
   {
@@ -581,13 +699,34 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
     return false;
   }
 
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t v : polygons[f])
+      if(v >= points.size())
+      {
+        failure = {"ERROR_INPUT", "cannot read '" + path + "': face " + std::to_string(f + 1) +
+                                  " refers to a missing vertex"};
+        return false;
+      }
+
+  if(repair)
+  {
+    optimize_seams_cli::repair_polygon_soup(points, polygons, *repair);
+    if(polygons.empty())
+    {
+      failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh has no valid face left after --repair ('" +
+                                                       path + "')");
+      return false;
+    }
+  }
+
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     const Point_3& p = points[i];
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
     {
       failure = code_failure(SMSO::ERROR_NON_FINITE_COORDINATES,
-                             "input has a non-finite coordinate (vertex " + std::to_string(i + 1) + ")");
+                             "input has a non-finite coordinate (vertex " + std::to_string(i + 1) + ")" +
+                               try_repair);
       return false;
     }
   }
@@ -600,26 +739,19 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
     if(poly.size() < 3)
     {
       failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
-                             "input face " + std::to_string(f + 1) + " has fewer than three corners");
+                             "input face " + std::to_string(f + 1) + " has fewer than three corners" + try_repair);
       return false;
     }
     has_polygons = has_polygons || poly.size() > 3;
     for(std::size_t v : poly)
-    {
-      if(v >= points.size())
-      {
-        failure = {"ERROR_INPUT", "cannot read '" + path + "': face " + std::to_string(f + 1) +
-                                  " refers to a missing vertex"};
-        return false;
-      }
       used[v] = 1;
-    }
   }
 
   // Zero-area triangles make the distortion energy infinite: refuse them here
-  // with the face number, rather than deep inside the solver.
+  // with the face number, rather than deep inside the solver. (--repair
+  // removes the collinear ones from the mesh below.)
   std::size_t degenerate = 0, first_degenerate = 0;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
+  for(std::size_t f = 0; f < polygons.size() && !repair; ++f)
   {
     const auto& poly = polygons[f];
     bool bad = false;
@@ -636,7 +768,7 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
     failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
                            "input has " + std::to_string(degenerate) +
                            " zero-area (degenerate) face(s); the first is face " +
-                           std::to_string(first_degenerate + 1));
+                           std::to_string(first_degenerate + 1) + try_repair);
     return false;
   }
 
@@ -662,8 +794,8 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
 
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
-    // Inconsistent orientation is fixable; a non-manifold edge or vertex is not
-    // (orient_polygon_soup would have to duplicate points).
+    // Inconsistent orientation is fixable; a non-manifold edge or vertex is
+    // not, unless --repair lets orient_polygon_soup duplicate points.
     std::vector<Point_3> oriented_points = points;
     std::vector<std::vector<std::size_t> > oriented = polygons;
     const bool no_duplication = PMP::orient_polygon_soup(oriented_points, oriented);
@@ -672,6 +804,9 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
     {
       polygons.swap(oriented);
       notes.push_back("reoriented faces to a consistent orientation");
+    }
+    else if(repair && orient_polygon_soup_duplicating(points, polygons, *repair))
+    {
     }
     else
     {
@@ -690,7 +825,8 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
         detail += std::to_string(bad_edges) + " edge(s) with more than two faces";
       else
         detail += "faces around a vertex do not form a single fan, or the surface is not orientable";
-      failure = code_failure(SMSO::ERROR_NON_MANIFOLD_MESH, detail);
+      failure = code_failure(SMSO::ERROR_NON_MANIFOLD_MESH,
+                             detail + (repair ? " (--repair could not fix it)" : try_repair));
       return false;
     }
   }
@@ -707,16 +843,25 @@ bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& no
     }
     notes.push_back("triangulated polygons: " + std::to_string(before) + " faces became " +
                     std::to_string(num_faces(mesh)) + " triangles");
-    std::size_t bad = 0;
+  }
+  std::size_t bad = 0;
+  if(repair)
+    bad = repair_degenerate_faces(mesh, *repair);
+  else if(has_polygons)
     for(face_descriptor f : faces(mesh))
       bad += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
-    if(bad > 0)
-    {
-      failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
-                             "input has " + std::to_string(bad) +
-                             " zero-area triangle(s) after triangulating its polygons");
-      return false;
-    }
+  if(bad > 0)
+  {
+    failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
+                           "input has " + std::to_string(bad) + " zero-area triangle(s) " +
+                           (repair ? "that --repair could not remove" : "after triangulating its polygons" +
+                                                                            try_repair));
+    return false;
+  }
+  if(num_faces(mesh) == 0)
+  {
+    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh has no face left after --repair");
+    return false;
   }
   return true;
 }
@@ -806,16 +951,14 @@ class Progress_printer
 public:
   // `time_limit` > 0: every call after that many seconds (from construction)
   // cancels the run.
-  explicit Progress_printer(bool enabled, double time_limit = 0)
-    : m_enabled(enabled), m_tty(enabled && ::isatty(STDERR_FILENO) == 1),
+  // `label` names the energy of the descent (the figure the library reports).
+  explicit Progress_printer(bool enabled, double time_limit = 0, const char* label = "E_SD")
+    : m_label(label), m_enabled(enabled), m_tty(enabled && ::isatty(STDERR_FILENO) == 1),
       m_last(std::chrono::steady_clock::now()), m_start(m_last), m_time_limit(time_limit)
   {}
 
   bool time_limit_reached() const { return m_time_limit_reached; }
 
-  bool on_iteration(const SMSO::Seam_optimization_progress& p) { return update(p); }
-  bool on_topology_operation(const SMSO::Seam_optimization_progress& p) { return update(p); }
-  bool on_lambda_update(const SMSO::Seam_optimization_progress& p) { return update(p); }
 
   // The last state (if held back), and the newline that ends the updating line.
   void finish()
@@ -830,7 +973,8 @@ public:
     m_width = 0;
   }
 
-private:
+  // Called by the library's visitor (through the request's callback); false
+  // cancels the run.
   bool update(const SMSO::Seam_optimization_progress& p)
   {
     if(m_time_limit > 0 && !m_time_limit_reached)
@@ -848,11 +992,12 @@ private:
     return !m_time_limit_reached;   // cancels only past --time-limit
   }
 
+private:
   void print(const SMSO::Seam_optimization_progress& p)
   {
     char line[160];
-    int n = std::snprintf(line, sizeof(line), "it %zu  ops %zu  E_SD %.6g  E_se %.4g  lambda %.4g  t %.1f s",
-                          p.iterations, p.topology_operations, p.distortion, p.seam_length_normalized,
+    int n = std::snprintf(line, sizeof(line), "it %zu  ops %zu  %s %.6g  E_se %.4g  lambda %.4g  t %.1f s",
+                          p.iterations, p.topology_operations, m_label, p.distortion, p.seam_length_normalized,
                           p.lambda, p.seconds);
     n = std::max(0, std::min(n, int(sizeof(line)) - 1));
     if(m_tty)
@@ -868,6 +1013,7 @@ private:
   }
 
   static constexpr std::chrono::milliseconds interval{200};
+  const char* m_label;
   bool m_enabled;
   bool m_tty;
   std::chrono::steady_clock::time_point m_last;
@@ -933,17 +1079,23 @@ int run(const Options& options)
   report.mode = options.mode();
   report.distortion_bound = options.distortion_bound;
   report.seam_weight = options.seam_weight;
+  report.energy = options.energy;
+  report.threads = options.threads;
+  report.repair = options.repair;
+
+#ifdef CGAL_LINKED_WITH_TBB
+  // Caps TBB's workers for the whole run (the parallel candidate scoring).
+  std::unique_ptr<tbb::global_control> thread_cap;
+  if(options.threads > 0)
+    thread_cap = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                       options.threads);
+#endif
 
   // Notes are printed only with the summary, so that a failure is exactly one line.
-  // The report always says that the result is not guaranteed bijective; stderr
-  // says it when the user did not ask for --no-bijectivity.
   std::vector<std::string> notes;
-  report.notes.push_back(bijectivity_note);
-  if(report.mode != Mode::KEEP_SEAMS && !options.no_bijectivity)
-    notes.push_back(bijectivity_note);
 
   Mesh mesh;
-  Mesh::Property_map<halfedge_descriptor, Point_2> uvmap;
+  UV_map uvmap;
   Load_failure failure;
   bool loaded = false;
   if(options.use_input_uv)
@@ -952,7 +1104,7 @@ int run(const Options& options)
     loaded = load_mesh_with_uv_map(options.input, mesh, uvmap, failure);
   }
   else
-    loaded = load_mesh(options.input, mesh, notes, failure);
+    loaded = load_mesh(options.input, mesh, notes, failure, options.repair ? &report.repair_summary : nullptr);
   if(!loaded)
   {
     report.status = failure.status;
@@ -960,45 +1112,35 @@ int run(const Options& options)
     print_error(failure.line);
     return finish(options, report, t0, EXIT_RUN_FAILED);
   }
+  report.repair_done = options.repair;
   for(const std::string& n : notes)
-    if(n != bijectivity_note)
-      report.notes.push_back(n);
+    report.notes.push_back(n);
   report.faces = num_faces(mesh);
   report.vertices = num_vertices(mesh);
+  // What the repair did is worth seeing before a long run: printed now.
+  if(options.repair && !options.quiet)
+    std::cerr << program_name << ": repair: " << report.repair_summary.description() << std::endl;
 
   if(!options.use_input_uv)
     uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
-  auto seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
+  Seam_map seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
   if(options.use_input_uv)
     seams_from_uv_map(mesh, uvmap, seams);
 
-  // Packs are joined from the right, one parameter at a time: in the
-  // package's parameters.h, combine() of a pack of three or more parameters
-  // with another silently drops some of them (a lookup inside append()).
-  namespace NP = SMSO::parameters;
-  const auto common = NP::combine(
-    NP::use_uv_map_as_initial(options.use_input_uv),
-    NP::combine(NP::edge_is_seam_map(seams), NP::maximum_number_of_iterations(options.iteration_cap())));
-  Progress_printer progress(!options.quiet, options.time_limit);
-  const auto with_visitor = NP::combine(
-    NP::bijective(!options.no_bijectivity),
-    NP::combine(CGAL::parameters::visitor(std::ref(progress)), common));
+  const char* const progress_label[] = {"E_SD", "E_arap", "E_mips"};
+  Progress_printer progress(!options.quiet, options.time_limit, progress_label[static_cast<int>(options.energy)]);
+  Optimization_request request;
+  request.mode = report.mode;
+  request.energy = options.energy;
+  request.distortion_bound = options.distortion_bound;
+  request.seam_weight = options.seam_weight;
+  request.use_input_uv = options.use_input_uv;
+  request.bijective = !options.no_bijectivity;
+  request.iteration_cap = options.iteration_cap();
+  request.progress = [&progress](const SMSO::Seam_optimization_progress& p) { return progress.update(p); };
 
   const auto t_opt = std::chrono::steady_clock::now();
-  switch(report.mode)
-  {
-    case Mode::KEEP_SEAMS:
-      report.result = SMSO::minimize_distortion(mesh, uvmap, common);
-      break;
-    case Mode::DISTORTION_BOUND:
-      report.result = SMSO::optimize_seams(
-        mesh, uvmap, NP::combine(NP::distortion_bound(options.distortion_bound), with_visitor));
-      break;
-    case Mode::SEAM_WEIGHT:
-      report.result = SMSO::optimize_seams(
-        mesh, uvmap, NP::combine(NP::seam_weight(options.seam_weight), with_visitor));
-      break;
-  }
+  report.result = run_optimization(mesh, uvmap, seams, request);
   report.seconds = seconds_since(t_opt);
   progress.finish();
   const SMSO::Optimization_result& res = report.result;
@@ -1021,9 +1163,27 @@ int run(const Options& options)
     print_error(line);
     return finish(options, report, t0, EXIT_RUN_FAILED);
   }
+  if(!res.bijective)
+  {
+    const std::string n = "the UV map is not bijective: " + std::to_string(res.overlapping_triangle_pairs) +
+                          " overlapping triangle pairs" +
+                          (report.mode == Mode::KEEP_SEAMS ? " (--keep-seams has no scaffold)"
+                           : options.no_bijectivity ? " (--no-bijectivity)" : "");
+    notes.push_back(n);
+    report.notes.push_back(n);
+  }
 
+  // The pictures use the map at its own scale (per-triangle distortion): keep
+  // a copy when --normalize rescales it for the OBJ.
+  UV_map picture_uvmap = uvmap;
   if(options.normalize)
   {
+    if(!options.svg.empty() || !options.png.empty())
+    {
+      picture_uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_picture_uv").first;
+      for(halfedge_descriptor h : halfedges(mesh))
+        put(picture_uvmap, h, get(uvmap, h));
+    }
     normalize_uv_map(mesh, uvmap);
     report.normalized = true;
   }
@@ -1041,6 +1201,39 @@ int run(const Options& options)
     return finish(options, report, t0, EXIT_RUN_FAILED);
   }
 
+  Picture_caption caption;
+  caption.title = std::filesystem::path(options.input).filename().string();
+  caption.e_sd = res.distortion;
+  if(report.mode == Mode::DISTORTION_BOUND)
+    caption.distortion_bound = options.distortion_bound;
+  caption.seam_length_normalized = res.seam_length_normalized;
+  caption.charts = res.charts;
+  if(options.energy != Energy_kind::SYMMETRIC_DIRICHLET)
+    caption.energy = energy_name(options.energy);
+  if(!options.svg.empty())
+  {
+    if(!write_uv_layout_svg_file(options.svg, mesh, picture_uvmap, seams, caption))
+    {
+      report.status = "ERROR_OUTPUT";
+      report.message = "cannot write '" + options.svg + "'";
+      print_error(report.message);
+      return finish(options, report, t0, EXIT_RUN_FAILED);
+    }
+    report.svg = options.svg;
+  }
+  if(!options.png.empty())
+  {
+    std::string error;
+    if(!render_png_file(options.png, mesh, picture_uvmap, seams, error))
+    {
+      report.status = "ERROR_OUTPUT";
+      report.message = error;
+      print_error(error);
+      return finish(options, report, t0, EXIT_RUN_FAILED);
+    }
+    report.png = options.png;
+  }
+
   if(!options.quiet)
   {
     for(const std::string& n : notes)
@@ -1053,15 +1246,21 @@ int run(const Options& options)
     if(report.mode == Mode::DISTORTION_BOUND)
       what << " (bound " << format_double(options.distortion_bound, 6)
            << (res.distortion <= options.distortion_bound ? ", met)" : ", NOT met)");
+    if(options.energy != Energy_kind::SYMMETRIC_DIRICHLET)
+      what << ", energy " << energy_name(options.energy);
     if(report.mode != Mode::KEEP_SEAMS)
       what << ", lambda " << format_double(res.lambda, 4) << ", " << res.topology_operations
            << " topology operations";
     what << ", " << res.iterations << " iterations (" << format_double(report.seconds, 3)
          << " s), normalized seam length " << format_double(res.seam_length_normalized, 4);
+    std::string written = report.output;
+    for(const std::string* extra : {&report.svg, &report.png})
+      if(!extra->empty())
+        written += ", " + *extra;
     std::cerr << program_name << ": "
               << std::filesystem::path(options.input).filename().string() << ": "
               << report.faces << " faces, " << res.charts << (res.charts == 1 ? " chart" : " charts")
-              << ", " << what.str() << "; wrote " << report.output << std::endl;
+              << ", " << what.str() << "; wrote " << written << std::endl;
   }
   return finish(options, report, t0, EXIT_OK);
 }

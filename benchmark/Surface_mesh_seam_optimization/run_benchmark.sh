@@ -5,9 +5,15 @@
 # Markdown table with the paper's code's figures (reference_optcuts.csv) beside
 # ours.
 #
-# Usage: run_benchmark.sh [--quick | --scaling] [--timeout S] [--bound B] [--out PREFIX]
-#                         [--data-dir DIR] [--build-dir DIR] [--jobs N] [mesh ...]
+# Usage: run_benchmark.sh [--quick | --profile | --scaling] [--no-bijectivity] [--timeout S]
+#                         [--bound B] [--out PREFIX] [--data-dir DIR] [--build-dir DIR]
+#                         [--jobs N] [mesh ...]
 #   --quick        cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000
+#   --profile      the time of each run split by phase (assembly, factorization,
+#                  symbolic analysis, line search, topology queries, scaffold), on the
+#                  --quick meshes or those given; every report has this table too
+#   --no-bijectivity  bijective(false): no scaffold, charts may overlap (the
+#                  reference's non-bijective figures are then the yardstick)
 #   (default)      every mesh of reference_optcuts.csv
 #   mesh ...       explicit mesh names (in DATA/benchmark) or .obj paths; mode "custom"
 #   --scaling      seconds and peak memory against faces on DATA/scalability/lucy_o_f*
@@ -45,6 +51,7 @@ max_faces=0
 converge_max_faces=100000
 append_to=
 bound=4.1
+bijective=1
 out_prefix=
 data_dir=${SMSO_SHARED_DATA:-$repo/../shared/data}
 build_dir=$repo/build-bench
@@ -54,6 +61,8 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --quick) mode=quick ;;
     --scaling) mode=scaling ;;
+    --profile) mode=profile ;;
+    --no-bijectivity) bijective=0 ;;
     --time-limit) time_limit=$2; shift ;;
     --max-faces) max_faces=$2; shift ;;
     --converge-max-faces) converge_max_faces=$2; shift ;;
@@ -66,7 +75,7 @@ while [ $# -gt 0 ]; do
     --jobs) jobs=$2; shift ;;
     -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
-    *) meshes+=("$1"); mode=custom ;;
+    *) meshes+=("$1"); [ "$mode" = profile ] || mode=custom ;;
   esac
   shift
 done
@@ -102,7 +111,7 @@ if [ "$mode" = scaling ]; then
 fi
 
 # --- mesh list
-if [ "$mode" = quick ]; then
+if [ "$mode" = quick ] || { [ "$mode" = profile ] && [ ${#meshes[@]} -eq 0 ]; }; then
   meshes=(cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000)
 elif [ "$mode" = full ]; then
   [ -f "$reference" ] || { echo "no $reference" >&2; exit 2; }
@@ -126,7 +135,8 @@ for m in "${meshes[@]}"; do
   esac
   name=$(basename "$file"); name=${name%.*}
   t0=$(date +%s.%N)
-  line=$(timeout --kill-after=10 "$timeout_s" "$bin" --no-header --bound "$bound" --out-dir "$out_dir" "$file" 2>"$work/$name.err")
+  bij_flag=(); [ "$bijective" = 1 ] || bij_flag=(--no-bijectivity)
+  line=$(timeout --kill-after=10 "$timeout_s" "$bin" --no-header --bound "$bound" "${bij_flag[@]}" --out-dir "$out_dir" "$file" 2>"$work/$name.err")
   rc=$?
   t1=$(date +%s.%N)
   if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
@@ -145,11 +155,13 @@ done
 
 
 python3 - "$raw" "$work" "$reference" "$out_prefix" "$mode" "$bound" "$commit" "$dirty" "$(nproc)" "$cpu" \
-  "$start_date" "$load_before" "$timeout_s" <<'EOF'
+  "$start_date" "$load_before" "$timeout_s" "$bijective" <<'EOF'
 import csv, json, os, statistics, sys
-raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load, timeout_s = sys.argv[1:]
+raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load, timeout_s, bijective = sys.argv[1:]
 fields = ["mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
-          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda"]
+          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds",
+          "overlapping_pairs", "scaffold_rebuilds", "t_assembly", "t_factorization", "t_symbolic",
+          "t_line_search", "t_topology", "t_scaffold"]
 rows = [dict(zip(fields, l)) for l in csv.reader(open(raw)) if l]
 
 ref = {}  # mesh -> {bijective flag -> row}
@@ -173,7 +185,7 @@ for r in rows:
         try: u = json.load(open(p))
         except ValueError: u = {}
     rr = ref.get(r["mesh"], {})
-    rb = rr.get("0") or rr.get("1")
+    rb = (rr.get("1") or rr.get("0")) if bijective == "1" else (rr.get("0") or rr.get("1"))
     o = dict(r)
     o["uvm_e_sd"] = u.get("e_sd")
     o["uvm_seam_length_normalized"] = u.get("seam_length_normalized")
@@ -208,8 +220,12 @@ L = []
 L.append(f"# optimize_seams benchmark ({mode})\n")
 L.append(f"- date: {date}; git commit: {commit}" + (f" (working tree had {dirty} uncommitted change(s) in include/ or the benchmark source)" if dirty != "0" else "") + "")
 L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start: {load}")
-L.append(f"- settings: distortion bound {bound}, no bijectivity (no scaffold yet), one process per mesh, time limit {timeout_s} s per mesh")
-L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv); the non-bijective row where there is one (ref bij = 0), else the bijective one (ref bij = 1)")
+if bijective == "1":
+    L.append(f"- settings: distortion bound {bound}, default settings (bijective: scaffold on), one process per mesh, time limit {timeout_s} s per mesh")
+    L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv), its bijective run (ref bij = 1) where there is one, else its non-bijective one (ref bij = 0)")
+else:
+    L.append(f"- settings: distortion bound {bound}, bijective(false) (no scaffold: charts may overlap), one process per mesh, time limit {timeout_s} s per mesh")
+    L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv); the non-bijective row where there is one (ref bij = 0), else the bijective one (ref bij = 1)")
 L.append(f"- s: wall seconds of the optimize_seams() call; E_SD, E_se (normalized seam length), flips and overlapping pairs by uvmetrics.py on the written OBJ; E_SD lib / E_se lib: the library's own figures; MB: peak resident memory (ru_maxrss) of the process")
 L.append(f"- ratios: E_se / ref E_se (< 1: shorter seams), ref s / s (> 1: faster)")
 if ours_med is not None:
@@ -233,6 +249,28 @@ for o in out:
              str(o["uvm_overlap_pairs"]) if o["uvm_overlap_pairs"] is not None else "-",
              fmt(num(o["peak_mb"]), 0), fmt(o["ref_peak_mb"], 0), o["status"]]
     L.append("| " + " | ".join(str(c) for c in cells) + " |")
+# where the time goes (Optimization_result::timings)
+phases = [("t_assembly", "assembly"), ("t_factorization", "factorization"), ("t_symbolic", "symbolic analysis"),
+          ("t_line_search", "line search"), ("t_topology", "topology queries"), ("t_scaffold", "scaffold")]
+timed = [o for o in out if num(o.get("t_assembly")) is not None and num(o["seconds"])]
+if timed:
+    L.append("")
+    L.append("## Time by phase\n")
+    L.append("Seconds (and share of the wall time) of each phase; other: setup, measures, copies. Scaffold rebuilds: times the scaffold was meshed.\n")
+    hdr = ["mesh", "s"] + [p[1] for p in phases] + ["other", "scaffold rebuilds"]
+    L.append("| " + " | ".join(hdr) + " |")
+    L.append("|" + "---|" * len(hdr))
+    sums = [0.0] * (len(phases) + 2)
+    for o in timed:
+        s = num(o["seconds"])
+        ts = [num(o[p[0]]) or 0.0 for p in phases]
+        other = max(0.0, s - sum(ts))
+        for i, t in enumerate(ts + [other]): sums[i] += t
+        sums[-1] += s
+        L.append("| " + " | ".join([o["mesh"], fmt(s)] + [f"{t:.2f} ({100 * t / s:.0f}%)" for t in ts + [other]]
+                                   + [o.get("scaffold_rebuilds") or "-"]) + " |")
+    tot = sums[-1]
+    L.append("| " + " | ".join(["all", fmt(tot)] + [f"{t:.2f} ({100 * t / tot:.0f}%)" for t in sums[:-1]] + ["-"]) + " |")
 open(prefix + ".md", "w").write("\n".join(L) + "\n")
 print("\n".join(L))
 print(f"\nwrote {prefix}.csv and {prefix}.md", file=sys.stderr)

@@ -2,7 +2,10 @@
 // each mesh given, writes DIR/<name>.obj with the UVs, and prints one CSV line
 // per mesh:
 //   mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,
-//   charts,flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds
+//   charts,flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds,
+//   overlapping_pairs,scaffold_rebuilds,t_assembly,t_factorization,t_symbolic,
+//   t_line_search,t_topology,t_scaffold
+// (t_*: Optimization_result::timings, seconds by phase).
 // seconds: wall time of the optimize_seams() call (reading and writing excluded).
 // peak_mb: getrusage(RUSAGE_SELF).ru_maxrss of the whole process so far, so run
 // one mesh per process to get a per-mesh figure (run_benchmark.sh does).
@@ -15,11 +18,12 @@
 // (none for a disk) instead of optimize_seams(): the descent step alone. The
 // initial map (compute_initial_parameterization()) is then timed apart:
 // seconds is the descent from it, initial_map_seconds the map itself.
+// --no-bijectivity: bijective(false) (no scaffold; charts may overlap).
 // --solver cholmod: Cholmod_traits instead of the default Eigen_simplicial_ldlt_traits
 // (when the package is built with CHOLMOD).
 //
 // Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S]
-//                       [--distortion-only] [--solver ldlt|cholmod] [--no-header] mesh.obj ...
+//                       [--distortion-only] [--no-bijectivity] [--solver ldlt|cholmod] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -76,6 +80,7 @@ struct Settings
   std::size_t max_iterations = 100000;
   double time_limit = 0; // seconds; 0: none
   bool distortion_only = false;
+  bool bijective = true;
   bool cholmod = false;
   std::string out_dir = ".";
 };
@@ -88,6 +93,8 @@ struct Row
   std::size_t iterations = 0, topology_operations = 0, charts = 0, flips = 0;
   double e_sd = 0, seam = 0, lambda = 0;
   bool bound_met = false, has_result = false;
+  std::size_t overlaps = 0, scaffold_rebuilds = 0;
+  SMSO::Optimization_timings timings;
   std::string status = "ERROR_UNKNOWN";
 };
 
@@ -95,7 +102,7 @@ static void print(const Row& r)
 {
   if(!r.has_result) // rejected or unreadable: the figures are left empty
   {
-    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
+    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,,,,,,,,,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
     std::fflush(stdout);
     return;
   }
@@ -103,7 +110,9 @@ static void print(const Row& r)
               r.iterations, r.topology_operations, r.e_sd, r.seam, r.charts, r.flips, peak_mb(), r.status.c_str(),
               int(r.bound_met), r.lambda);
   if(r.initial_map_seconds >= 0) std::printf("%.3f", r.initial_map_seconds);
-  std::printf("\n");
+  const SMSO::Optimization_timings& t = r.timings;
+  std::printf(",%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", r.overlaps, r.scaffold_rebuilds, t.assembly, t.factorization,
+              t.symbolic_analysis, t.line_search, t.topology, t.scaffold);
   std::fflush(stdout);
 }
 
@@ -119,7 +128,8 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
                                        SMSO_np::sparse_linear_solver(SolverTraits()));
   if(settings.distortion_only)
     return SMSO::minimize_distortion(sm, uv, SMSO_np::combine(common, SMSO_np::use_uv_map_as_initial(true)));
-  return SMSO::optimize_seams(sm, uv, SMSO_np::combine(common, SMSO_np::visitor(std::ref(visitor))));
+  return SMSO::optimize_seams(sm, uv, SMSO_np::combine(common, SMSO_np::bijective(settings.bijective),
+                                                       SMSO_np::visitor(std::ref(visitor))));
 }
 
 static Row run(const std::string& file, const Settings& settings)
@@ -171,6 +181,9 @@ static Row run(const std::string& file, const Settings& settings)
   row.charts = r.charts;
   row.lambda = r.lambda;
   row.bound_met = r.bound_met;
+  row.overlaps = r.overlapping_triangle_pairs;
+  row.scaffold_rebuilds = r.scaffold_rebuilds;
+  row.timings = r.timings;
   const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
   row.flips = m.flipped_triangles;
   if(!settings.out_dir.empty())
@@ -189,12 +202,13 @@ static int usage(const char* argv0)
 {
   std::cerr << "usage: " << argv0
             << " [--bound B] [--out-dir DIR] [--max-iterations N] [--time-limit S] [--distortion-only] [--solver S]"
-               " [--no-header] mesh.obj ...\n"
+               " [--no-bijectivity] [--no-header] mesh.obj ...\n"
                "  --bound B           distortion bound on E_SD (default 4.1)\n"
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
                "  --max-iterations N  cap on Newton iterations (default 100000)\n"
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
+               "  --no-bijectivity    no scaffold: charts may overlap\n"
                "  --solver S          ldlt (Eigen SimplicialLDLT, the default) or cholmod (if built with it)\n"
                "  --no-header         do not print the CSV header line\n";
   return EXIT_FAILURE;
@@ -217,6 +231,7 @@ int main(int argc, char** argv)
       if(!(settings.time_limit > 0)) return usage(argv[0]);
     }
     else if(a == "--distortion-only") settings.distortion_only = true;
+    else if(a == "--no-bijectivity") settings.bijective = false;
     else if(a == "--solver" && i + 1 < argc)
     {
       const std::string solver = argv[++i];
@@ -240,7 +255,8 @@ int main(int argc, char** argv)
 
   if(header)
     std::printf("mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,charts,"
-                "flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds\n");
+                "flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds,overlapping_pairs,scaffold_rebuilds,"
+                "t_assembly,t_factorization,t_symbolic,t_line_search,t_topology,t_scaffold\n");
   for(const std::string& file : files)
   {
     Row row;

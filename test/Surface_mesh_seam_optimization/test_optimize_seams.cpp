@@ -98,6 +98,12 @@ BOOST_AUTO_TEST_CASE(the_bound_is_met_on_small_meshes)
     BOOST_TEST(r.result.distortion <= 4.1);
     BOOST_TEST(r.result.distortion < r.result.initial_distortion);
     BOOST_TEST(r.result.topology_operations > 0u);
+    // the phases add up to most of the wall time, and each was timed
+    const SMSO::Optimization_timings& t = r.result.timings;
+    BOOST_TEST(t.assembly > 0); BOOST_TEST(t.factorization > 0); BOOST_TEST(t.symbolic_analysis > 0);
+    BOOST_TEST(t.line_search > 0); BOOST_TEST(t.topology > 0); BOOST_TEST(t.scaffold > 0);
+    BOOST_TEST(t.total() <= r.result.seconds);
+    BOOST_TEST(t.total() >= 0.5 * r.result.seconds);
     check_valid(r);
   }
 }
@@ -306,6 +312,7 @@ BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
     free_run.sm, free_run.uv, SMSO_np::combine(SMSO_np::use_uv_map_as_initial(true),
                                                SMSO_np::edge_is_seam_map(free_run.seam)));
   BOOST_TEST(refused.status == SMSO::ERROR_OVERLAPPING_UV_MAP);
+  BOOST_TEST(refused.message.find("bijective(false)") != std::string::npos);
   BOOST_TEST(!refused.has_result());
   std::size_t i = 0;
   bool untouched = true;

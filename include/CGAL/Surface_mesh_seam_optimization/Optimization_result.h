@@ -14,6 +14,24 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
+/// Wall seconds spent in each phase of an optimization (the rest: setup,
+/// measures, copying in and out).
+struct Optimization_timings
+{
+  double assembly = 0;          ///< energies, gradients and projected Hessians of the Newton iterations
+  double factorization = 0;     ///< numeric factorizations and solves
+  double symbolic_analysis = 0; ///< sparsity pattern and its analysis, after a topology operation or a new scaffold
+  double line_search = 0;       ///< flip-free step bound and backtracking
+  double topology = 0;          ///< candidate operations: ranking, stencil solves, application
+  double scaffold = 0;          ///< meshing the scaffold
+
+  double total() const
+  {
+    return assembly + factorization + symbolic_analysis + line_search + topology + scaffold;
+  }
+};
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationRef
 /// What `minimize_distortion()` and `optimize_seams()` return.
 struct Optimization_result
 {
@@ -32,6 +50,7 @@ struct Optimization_result
   bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
   double seconds = 0;
+  Optimization_timings timings;     ///< where the seconds went
 
   bool has_result() const { return Surface_mesh_seam_optimization::has_result(status); }
 };

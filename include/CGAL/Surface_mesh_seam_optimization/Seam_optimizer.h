@@ -112,6 +112,7 @@ public:
     m_initial_distortion = internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data());
     m_core.reset(new Core(m_cm, m_energy, solver, m_weight, m_settings, m_visitor));
     m_status = m_core->start();
+    if(m_status == ERROR_OVERLAPPING_UV_MAP) m_message = internal::overlapping_initial_map_message();
     m_running = (m_status == OK);
   }
 
@@ -157,6 +158,7 @@ public:
     r.iterations = m_core->iterations();
     r.topology_operations = m_core->topology_operations();
     r.scaffold_rebuilds = m_core->scaffold_rebuilds();
+    r.timings = m_core->timings();
     r.bound_met = m_settings.fixed_lambda ? false : r.distortion <= m_settings.distortion_bound;
     r.seconds = m_timer.time();
     return r;

@@ -208,6 +208,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
     }
   }
   result.iterations = newton.iterations();
+  result.timings = newton.timings();
 
   internal::write_uv_map(cm, copy, uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)

@@ -110,7 +110,8 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   result.status = optimizer.run();
   if(!has_result(result.status))
   {
-    result.message = "the optimization failed";
+    result.message = result.status == ERROR_OVERLAPPING_UV_MAP ? internal::overlapping_initial_map_message()
+                                                                : "the optimization failed";
     return result;
   }
 
@@ -122,6 +123,7 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   result.iterations = optimizer.iterations();
   result.topology_operations = optimizer.topology_operations();
   result.scaffold_rebuilds = optimizer.scaffold_rebuilds();
+  result.timings = optimizer.timings();
   result.bound_met = result.distortion <= settings.distortion_bound;
   result.seconds = timer.time();
   return result;

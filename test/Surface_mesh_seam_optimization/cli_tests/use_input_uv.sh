@@ -1,7 +1,7 @@
 #!/bin/bash
 # --use-input-uv: the optimizer's own output, read back with its UVs and
-# re-optimized with the seams kept, is already optimal (same E_SD, at most 3
-# iterations). An OBJ without texture coordinates, or with a flipped map, is
+# re-optimized with the seams kept, is already optimal (same E_SD to 1e-5: the
+# first run also minimized the scaffold's tiny energy, at most 3 iterations). An OBJ without texture coordinates, or with a flipped map, is
 # a one-line error with exit code 1.
 set -u
 BIN=$1 DATA=$2 SCRATCH=$3
@@ -26,7 +26,8 @@ def check(cond, what):
 check(r2["status"] == "OK", "status is %r, not OK" % r2["status"])
 check(r2["mode"] == "keep-seams", "mode %r" % r2["mode"])
 check(r2["iterations"] <= 3, "%r iterations from an optimal map" % r2["iterations"])
-check(abs(r2["e_sd"] - r1["e_sd"]) <= 1e-6 * r1["e_sd"], "e_sd %r, first run %r" % (r2["e_sd"], r1["e_sd"]))
+check(r2["e_sd"] <= r1["e_sd"] * (1 + 1e-12), "e_sd grew")
+check(abs(r2["e_sd"] - r1["e_sd"]) <= 1e-5 * r1["e_sd"], "e_sd %r, first run %r" % (r2["e_sd"], r1["e_sd"]))
 check(abs(r2["initial_e_sd"] - r1["e_sd"]) <= 1e-6 * r1["e_sd"],
       "initial_e_sd %r is not the input map's %r" % (r2["initial_e_sd"], r1["e_sd"]))
 check(r2["charts"] == r1["charts"], "charts %r vs %r" % (r2["charts"], r1["charts"]))

@@ -37,6 +37,12 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+inline const char* overlapping_initial_map_message()
+{
+  return "the initial UV map is not bijective (charts overlap or touch): give a bijective map, "
+         "or pass bijective(false)";
+}
+
 struct Alternating_settings
 {
   double distortion_bound = 4.1;
@@ -82,7 +88,7 @@ public:
   {
     if(m_settings.bijective)
     {
-      if(!m_scaffold.build(m_cm)) return ERROR_OVERLAPPING_UV_MAP;
+      if(!build_scaffold()) return ERROR_OVERLAPPING_UV_MAP;
       m_newton.set_scaffold(&m_scaffold);
       m_topology.set_scaffold(&m_scaffold);
     }
@@ -91,6 +97,14 @@ public:
   }
 
   std::size_t scaffold_rebuilds() const { return m_scaffold_rebuilds; }
+
+  Optimization_timings timings() const
+  {
+    Optimization_timings t = m_newton.timings();
+    t.topology = m_timings.topology;
+    t.scaffold = m_timings.scaffold;
+    return t;
+  }
 
   // One alternation from a stationary point: stopping tests, dual update,
   // topology operation, descent. False when the optimization is over;
@@ -112,7 +126,10 @@ public:
       if(m_has_best && m_stationary_points++ > m_best_at + 50) return false;
     }
     std::vector<Operation> ops;
-    gather_candidates(e_sd, ops);
+    {
+      Phase_timer timer(m_timings.topology);
+      gather_candidates(e_sd, ops);
+    }
     if(!m_settings.fixed_lambda)
     {
       // above the bound only cuts, below only merges (the dual step makes them pay)
@@ -200,7 +217,10 @@ private:
     {
       if(m_cancelled) break;
       std::vector<Operation> ops;
-      m_topology.boundary_splits(tip, ops);
+      {
+        Phase_timer timer(m_timings.topology);
+        m_topology.boundary_splits(tip, ops);
+      }
       const Operation* best = nullptr;
       for(const Operation& op : ops)
         if(!best || op.weighted(m_lambda) < best->weighted(m_lambda)) best = &op;
@@ -225,7 +245,10 @@ private:
     while(failures < 5)
     {
       std::vector<Operation> ops;
-      m_topology.merges(ops);
+      {
+        Phase_timer timer(m_timings.topology);
+        m_topology.merges(ops);
+      }
       const Operation* best = nullptr;
       for(const Operation& op : ops)
       {
@@ -257,12 +280,15 @@ private:
     std::vector<int> corner_uv, uv_vertex;
     std::vector<double> uv;
     if(m_settings.bijective) { corner_uv = m_cm.corner_uv; uv_vertex = m_cm.uv_vertex; uv = m_cm.uv; }
-    Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
+    {
+      Phase_timer timer(m_timings.topology);
+      Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
+    }
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
-    if(m_settings.bijective && !m_scaffold.build(m_cm))
+    if(m_settings.bijective && !build_scaffold())
     {
       m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
-      m_scaffold.build(m_cm);
+      build_scaffold();
       m_newton.rebuild_pattern();
       ++m_rejected;
       return false;
@@ -273,6 +299,12 @@ private:
     m_newton.rebuild_pattern();
     if(!m_visitor.on_topology_operation(progress())) m_cancelled = true;
     return true;
+  }
+
+  bool build_scaffold()
+  {
+    Phase_timer timer(m_timings.scaffold);
+    return m_scaffold.build(m_cm);
   }
 
   // Scaffold positions live in the scaffold; Newton's unified vector is
@@ -290,7 +322,7 @@ private:
     if(m_settings.bijective)
     {
       ++m_scaffold_rebuilds;
-      if(!m_scaffold.build(m_cm)) m_newton.set_scaffold(nullptr); // cannot happen on a bijective map
+      if(!build_scaffold()) m_newton.set_scaffold(nullptr); // cannot happen on a bijective map
     }
     return m_newton.rebuild_pattern();
   }
@@ -433,6 +465,7 @@ private:
   tbb::enumerable_thread_specific<std::unique_ptr<Topology_step<Energy> > > m_thread_topology;
 #endif
   Scaffold m_scaffold;
+  Optimization_timings m_timings; // topology and scaffold; Newton keeps its own
   std::vector<double> m_x;
   std::size_t m_scaffold_rebuilds = 0, m_rejected = 0;
   bool m_rebuilt_at_convergence = false;

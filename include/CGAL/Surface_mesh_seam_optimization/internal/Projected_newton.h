@@ -10,6 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
 
+#include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
@@ -18,6 +19,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -25,6 +27,23 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
+
+// Adds the wall seconds from construction to stop() (or destruction) to `sum`.
+class Phase_timer
+{
+public:
+  explicit Phase_timer(double& sum) : m_sum(&sum), m_start(std::chrono::steady_clock::now()) {}
+  ~Phase_timer() { stop(); }
+  void stop()
+  {
+    if(!m_sum) return;
+    *m_sum += std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    m_sum = nullptr;
+  }
+private:
+  double* m_sum;
+  std::chrono::steady_clock::time_point m_start;
+};
 
 struct Newton_settings
 {
@@ -98,9 +117,12 @@ public:
   void set_scaffold(Scaffold* scaffold) { m_scaffold = scaffold; }
   bool has_scaffold() const { return m_scaffold && !m_scaffold->empty(); }
 
+  const Optimization_timings& timings() const { return m_timings; }
+
   // Call after any change of the corner -> UV labelling or of the scaffold.
   bool rebuild_pattern()
   {
+    Phase_timer timer(m_timings.symbolic_analysis);
     const std::size_t ne = number_of_elements();
     const int ndof = int(2 * m_cm.number_of_uv_vertices() + (has_scaffold() ? m_scaffold->pos.size() : 0));
     std::vector<Eigen::Triplet<double> > triplets;
@@ -147,7 +169,9 @@ public:
   Newton_status step()
   {
     load();
+    Phase_timer assembly(m_timings.assembly);
     const double e0 = assemble();
+    assembly.stop();
     const double A = m_cm.total_area;
     m_gradient_norm2 = m_gradient.squaredNorm() * A;
     if(m_gradient_norm2 < m_settings.gradient_tolerance) return NEWTON_CONVERGED;
@@ -159,9 +183,12 @@ public:
     mean_diag /= double(m_diagonal.size());
     for(int i : m_diagonal) values[i] += 1e-10 * mean_diag;
 
+    Phase_timer factorization(m_timings.factorization);
     if(!m_solver.factorize(m_H)) return NEWTON_SOLVER_FAILED;
     Eigen::VectorXd rhs = -m_gradient;
     if(!m_solver.solve(rhs, m_direction)) return NEWTON_SOLVER_FAILED;
+    factorization.stop();
+    Phase_timer line_search(m_timings.line_search);
 
     double slope = m_gradient.dot(m_direction);
     if(!(slope < 0)) { m_direction = -m_gradient; slope = -m_gradient.squaredNorm(); }
@@ -297,6 +324,7 @@ private:
   std::vector<double> m_trial;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
+  Optimization_timings m_timings;
 };
 
 } // namespace internal

@@ -1,0 +1,18 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The optimizers instantiated for ARAP_energy (see run_optimization.h).
+
+#include "run_optimization_impl.h"
+
+#include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
+
+namespace optimize_seams_cli {
+
+SMSO::Optimization_result run_arap(Mesh& mesh, UV_map uvmap, Seam_map seams,
+                                   const Optimization_request& request)
+{
+  return run_with_energy(mesh, uvmap, seams, request, SMSO::ARAP_energy());
+}
+
+} // namespace optimize_seams_cli
