@@ -379,13 +379,26 @@ private:
     for(std::size_t i = 0; i < nb; ++i) m_topology.boundary_splits(boundary[i].second, per_vertex[i]);
     for(const std::vector<Operation>& v : per_vertex) ops.insert(ops.end(), v.begin(), v.end());
     m_topology.merges(ops);
+    // Only what the step may apply counts: above the bound, splits; below, merges.
+    const bool above = e_sd > m_settings.distortion_bound;
+    auto usable = [&](const Operation& op) {
+      return m_settings.fixed_lambda || above == (op.type != CORNER_MERGE);
+    };
     bool profitable = false;
-    for(const Operation& op : ops) profitable = profitable || op.weighted(m_lambda) < 0;
-    if(boundary.empty() || (!profitable && (m_settings.fixed_lambda || e_sd > m_settings.distortion_bound)))
+    for(const Operation& op : ops) profitable = profitable || (usable(op) && op.weighted(m_lambda) < 0);
+    if(boundary.empty() || (!profitable && (m_settings.fixed_lambda || above)))
     {
       const std::size_t ni = (std::min)(interior.size(),
                                         (std::max)(std::size_t(10), std::size_t(std::pow(double(interior.size()), 0.6))));
       for(std::size_t i = 0; i < ni; ++i) m_topology.interior_splits(interior[i].second, ops);
+    }
+    // Nothing usable among the best ranked vertices (their splits would
+    // overlap, say): widen the filter to every vertex rather than stop.
+    if(above && std::none_of(ops.begin(), ops.end(), usable))
+    {
+      for(std::size_t i = nb; i < boundary.size(); ++i) m_topology.boundary_splits(boundary[i].second, ops);
+      if(std::none_of(ops.begin(), ops.end(), usable))
+        for(const std::pair<double, int>& v : interior) m_topology.interior_splits(v.second, ops);
     }
   }
 
