@@ -36,7 +36,6 @@ check(r["iterations"] > 0, "no iteration")
 check(r["lambda"] is not None and 0 <= r["lambda"] < 1, "lambda %r" % r["lambda"])
 check(r["bijective"] is True, "the default run is not bijective")
 check(r["overlapping_triangle_pairs"] == 0, "%r overlapping pairs" % r["overlapping_triangle_pairs"])
-check(r["scaffold_rebuilds"] > 0, "no scaffold was built")
 check(r["notes"] == [], "notes on a clean run: %r" % r["notes"])
 v = vt = f = 0
 for line in open(sys.argv[2]):
