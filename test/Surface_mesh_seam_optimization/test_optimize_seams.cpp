@@ -108,12 +108,9 @@ BOOST_AUTO_TEST_CASE(the_bound_is_met_on_small_meshes)
   }
 }
 
-BOOST_AUTO_TEST_CASE(invariant_check_detects_broken_labellings)
+// The library's flat cut mesh of a run's result: seams where the UVs disagree.
+static void cut_mesh_of(const Run& r, SMSO::internal::Cut_mesh& cm)
 {
-  // The check itself must be able to fail: break a valid cut mesh in three ways.
-  Run r;
-  run("cat_f1500.obj", r, SMSO_np::distortion_bound(4.1));
-  SMSO::internal::Cut_mesh cm;
   SMSO::internal::Face_graph_copy<Surface_mesh> copy;
   std::string msg;
   BOOST_REQUIRE(SMSO::internal::copy_face_graph(r.sm, get(CGAL::vertex_point, r.sm), cm, copy, msg) == SMSO::OK);
@@ -123,6 +120,15 @@ BOOST_AUTO_TEST_CASE(invariant_check_detects_broken_labellings)
   SMSO::internal::seams_from_corner_uvs(cm, corner_uvs, seam);
   SMSO::internal::label_uv_vertices(cm, seam);
   SMSO::internal::set_uvs_from_corners(cm, corner_uvs);
+}
+
+BOOST_AUTO_TEST_CASE(invariant_check_detects_broken_labellings)
+{
+  // The check itself must be able to fail: break a valid cut mesh in three ways.
+  Run r;
+  run("cat_f1500.obj", r, SMSO_np::distortion_bound(4.1));
+  SMSO::internal::Cut_mesh cm;
+  cut_mesh_of(r, cm);
   BOOST_TEST(SMSO::internal::check_invariants(cm) == "");
 
   SMSO::internal::Cut_mesh flipped = cm;
@@ -357,15 +363,7 @@ BOOST_AUTO_TEST_CASE(the_scaffold_fills_the_box_around_the_charts)
   Run r;
   run("cat_f1500.obj", r, SMSO_np::distortion_bound(4.1));
   SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(r.sm, get(CGAL::vertex_point, r.sm), cm, copy, msg) == SMSO::OK);
-  std::vector<double> corner_uvs;
-  BOOST_REQUIRE(SMSO::internal::read_uv_map(r.sm, r.uv, copy, corner_uvs, msg) == SMSO::OK);
-  std::vector<char> seam;
-  SMSO::internal::seams_from_corner_uvs(cm, corner_uvs, seam);
-  SMSO::internal::label_uv_vertices(cm, seam);
-  SMSO::internal::set_uvs_from_corners(cm, corner_uvs);
+  cut_mesh_of(r, cm);
   SMSO::internal::Scaffold scaffold;
   BOOST_REQUIRE(scaffold.build(cm));
   BOOST_TEST(scaffold.number_of_triangles() > 0u);
