@@ -7,6 +7,7 @@
 // report. Every failure is one line on stderr and a non-zero exit code
 // (1: input or run failed, 2: bad options).
 
+#include "picture_common.h"
 #include "pictures.h"
 #include "repair_input.h"
 #include "run_optimization.h"
@@ -598,12 +599,7 @@ bool write_json_report(const std::string& path, const Run_report& r)
     out += ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");
   }
   out += "}\n";
-  std::ofstream os(path, std::ios::binary);
-  if(!os)
-    return false;
-  os << out;
-  os.close();
-  return static_cast<bool>(os);
+  return write_text_file(path, out);
 }
 
 // ---------------------------------------------------------------------------

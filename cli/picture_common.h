@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <string>
 
@@ -92,6 +93,17 @@ inline std::string picture_number(double x, int digits)
   char buf[40];
   std::snprintf(buf, sizeof(buf), "%.*g", digits, x);
   return buf;
+}
+
+// Writes `text` to `path`; false if the file cannot be written whole.
+inline bool write_text_file(const std::string& path, const std::string& text)
+{
+  std::ofstream os(path, std::ios::binary);
+  if(!os)
+    return false;
+  os << text;
+  os.close();
+  return static_cast<bool>(os);
 }
 
 } // namespace optimize_seams_cli

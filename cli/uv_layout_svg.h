@@ -20,7 +20,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -262,13 +261,7 @@ bool write_uv_layout_svg(const std::string& path, const TriangleMesh& mesh, UVMa
     svg += "</g>\n";
   }
   svg += "</svg>\n";
-
-  std::ofstream os(path, std::ios::binary);
-  if(!os)
-    return false;
-  os << svg;
-  os.close();
-  return static_cast<bool>(os);
+  return write_text_file(path, svg);
 }
 
 } // namespace optimize_seams_cli
