@@ -295,42 +295,40 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
       return true;
     };
 
-    if(name == "-h" || name == "--help")
+    // Switches, and options whose value is a file name.
+    const std::pair<const char*, bool*> switches[] = {
+      {"--repair", &options.repair}, {"--keep-seams", &options.keep_seams},
+      {"--use-input-uv", &options.use_input_uv}, {"--normalize", &options.normalize},
+      {"--quiet", &options.quiet}, {"--no-bijectivity", &options.no_bijectivity}};
+    const std::pair<const char*, std::string*> paths[] = {
+      {"-o", &options.output}, {"--output", &options.output}, {"--report", &options.report},
+      {"--svg", &options.svg}, {"--png", &options.png}};
+    bool* switch_option = nullptr;
+    std::string* path_option = nullptr;
+    for(const auto& o : switches) if(name == o.first) switch_option = o.second;
+    for(const auto& o : paths) if(name == o.first) path_option = o.second;
+
+    if(switch_option)
     {
       if(!no_value())
         return Parse_status::ERROR;
-      return Parse_status::HELP;
+      *switch_option = true;
     }
-    else if(name == "-o" || name == "--output")
+    else if(path_option)
     {
-      if(!take_value(options.output))
+      if(!take_value(*path_option))
         return Parse_status::ERROR;
-    }
-    else if(name == "--report")
-    {
-      if(!take_value(options.report))
-        return Parse_status::ERROR;
-    }
-    else if(name == "--svg")
-    {
-      if(!take_value(options.svg))
-        return Parse_status::ERROR;
-    }
-    else if(name == "--png")
-    {
-      if(!take_value(options.png))
-        return Parse_status::ERROR;
-      if(!png_supported())
+      if(path_option == &options.png && !png_supported())
       {
         error = "option '--png' is not available: optimize_seams was built without libpng";
         return Parse_status::ERROR;
       }
     }
-    else if(name == "--repair")
+    else if(name == "-h" || name == "--help")
     {
       if(!no_value())
         return Parse_status::ERROR;
-      options.repair = true;
+      return Parse_status::HELP;
     }
     else if(name == "--energy")
     {
@@ -354,18 +352,6 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         return Parse_status::ERROR;
       }
     }
-    else if(name == "--keep-seams")
-    {
-      if(!no_value())
-        return Parse_status::ERROR;
-      options.keep_seams = true;
-    }
-    else if(name == "--use-input-uv")
-    {
-      if(!no_value())
-        return Parse_status::ERROR;
-      options.use_input_uv = true;
-    }
     else if(name == "--time-limit")
     {
       std::string s;
@@ -376,24 +362,6 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         error = "option '--time-limit' needs a number of seconds > 0, not '" + s + "'";
         return Parse_status::ERROR;
       }
-    }
-    else if(name == "--normalize")
-    {
-      if(!no_value())
-        return Parse_status::ERROR;
-      options.normalize = true;
-    }
-    else if(name == "--quiet")
-    {
-      if(!no_value())
-        return Parse_status::ERROR;
-      options.quiet = true;
-    }
-    else if(name == "--no-bijectivity")
-    {
-      if(!no_value())
-        return Parse_status::ERROR;
-      options.no_bijectivity = true;
     }
     else if(name == "--distortion-bound")
     {

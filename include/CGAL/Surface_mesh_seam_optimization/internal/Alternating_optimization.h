@@ -88,7 +88,9 @@ public:
   {
     if(m_settings.bijective)
     {
-      if(!switch_scaffold_on()) return ERROR_OVERLAPPING_UV_MAP;
+      if(!build_scaffold()) return ERROR_OVERLAPPING_UV_MAP;
+      m_newton.set_scaffold(&m_scaffold);
+      m_topology.set_scaffold(&m_scaffold);
     }
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     return descend();
@@ -162,7 +164,7 @@ public:
       record(distortion(), seam_cost());
       // Whatever stopped the alternation, the seams of the best feasible
       // configuration may still zip shut within the bound.
-      if(status == OK && !m_settings.fixed_lambda && m_has_best && m_best_version != m_polished_version)
+      if(status == OK && !m_settings.fixed_lambda && m_has_best && !m_best_polished)
       {
         restore_best();
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
@@ -201,7 +203,7 @@ private:
       const Newton_status s = m_newton.step();
       if(s == NEWTON_SOLVER_FAILED) return ERROR_LINEAR_SOLVER;
       // a squeezed scaffold blocks the charts' motion: mesh the space anew
-      if(m_newton.has_scaffold() && m_scaffold.max_density_growth(scaffold_positions()) > m_scaffold.rebuild_threshold)
+      if(m_newton.has_scaffold() && m_scaffold.max_density_growth(scaffold_positions()) > m_scaffold.settings.rebuild_threshold)
       {
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
         if(s == NEWTON_CONVERGED && !m_rebuilt_at_convergence) { m_rebuilt_at_convergence = true; continue; }
@@ -247,8 +249,8 @@ private:
   Error_code polish_with_merges()
   {
     // whatever ends the polish, the best configuration it leaves is polished
-    struct Mark { std::size_t& polished; const std::size_t& best; ~Mark() { polished = best; } };
-    Mark mark{m_polished_version, m_best_version};
+    struct Mark { bool& polished; ~Mark() { polished = true; } };
+    Mark mark{m_best_polished};
     const double b = m_settings.distortion_bound;
     int failures = 0;
     std::vector<std::pair<int, int> > failed; // (uv_a, uv_b) tried in vain at this configuration
@@ -289,13 +291,13 @@ private:
   {
     std::vector<int> corner_uv, uv_vertex;
     std::vector<double> uv;
-    if(m_scaffold_on) { corner_uv = m_cm.corner_uv; uv_vertex = m_cm.uv_vertex; uv = m_cm.uv; }
+    if(m_settings.bijective) { corner_uv = m_cm.corner_uv; uv_vertex = m_cm.uv_vertex; uv = m_cm.uv; }
     {
       Phase_timer timer(m_timings.topology);
       Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
     }
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
-    if(m_scaffold_on && !build_scaffold())
+    if(m_settings.bijective && !build_scaffold())
     {
       m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
       build_scaffold();
@@ -311,15 +313,6 @@ private:
     return true;
   }
 
-  bool switch_scaffold_on()
-  {
-    if(!build_scaffold()) return false;
-    m_scaffold_on = true;
-    m_newton.set_scaffold(&m_scaffold);
-    m_topology.set_scaffold(&m_scaffold);
-    return true;
-  }
-
   // On failure (a numerically degenerate triangle, say) the previous
   // scaffold stays: its triangles are still unflipped, so it still bounds
   // the charts where they are.
@@ -327,12 +320,11 @@ private:
   {
     Phase_timer timer(m_timings.scaffold);
     Scaffold fresh;
-    fresh.total_weight = m_scaffold.total_weight;
-    fresh.rebuild_threshold = m_scaffold.rebuild_threshold;
-    fresh.min_height_ratio = m_scaffold.min_height_ratio;
+    fresh.settings = m_scaffold.settings;
     if(!fresh.build(m_cm)) return false;
     m_scaffold = std::move(fresh);
-    if(m_scaffold_on) m_newton.set_scaffold(&m_scaffold);
+    // (again, if a mismatched scaffold had to be dropped: see rebuild_scaffold())
+    if(m_settings.bijective) m_newton.set_scaffold(&m_scaffold);
     return true;
   }
 
@@ -348,7 +340,7 @@ private:
 
   bool rebuild_scaffold()
   {
-    if(m_scaffold_on)
+    if(m_settings.bijective)
     {
       ++m_scaffold_rebuilds;
       // a kept scaffold must still match the UV vertices (it does unless a
@@ -400,7 +392,7 @@ private:
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb), [&](const tbb::blocked_range<std::size_t>& range) {
         std::unique_ptr<Topology_step<Energy> >& local = m_thread_topology.local();
         if(!local) local.reset(new Topology_step<Energy>(m_cm, m_energy, m_weight));
-        local->set_scaffold(m_scaffold_on ? &m_scaffold : nullptr);
+        local->set_scaffold(m_settings.bijective ? &m_scaffold : nullptr);
         for(std::size_t i = range.begin(); i != range.end(); ++i)
           local->boundary_splits(boundary[i].second, per_vertex[i]);
       });
@@ -479,7 +471,7 @@ private:
     if(m_settings.fixed_lambda || e_sd > m_settings.distortion_bound) return;
     if(m_has_best && e_se >= m_best_se) return;
     m_has_best = true;
-    ++m_best_version;
+    m_best_polished = false;
     m_best_se = e_se;
     m_best_at = m_stationary_points;
     m_best_corner_uv = m_cm.corner_uv;
@@ -518,8 +510,7 @@ private:
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;
   bool m_has_best = false;
-  bool m_scaffold_on = false;
-  std::size_t m_best_version = 0, m_polished_version = std::size_t(-1);
+  bool m_best_polished = false;
   double m_best_se = 0, m_best_lambda = 0;
   std::vector<int> m_best_corner_uv, m_best_uv_vertex;
   std::vector<double> m_best_uv;

@@ -47,13 +47,17 @@ struct Scaffold
   std::vector<double> built_density; // per triangle: energy density when built (4 unless its rest was thickened)
   // triangles around each chart UV vertex: vertex_triangles[vertex_offset[u] .. vertex_offset[u+1])
   std::vector<int> vertex_offset, vertex_triangles;
-  // Total weight of the scaffold energy, relative to the charts' mean energy.
-  double total_weight = 1e-2;
-  // A scaffold triangle whose energy density grew by more than this since it
-  // was built is too squeezed: rebuild.
-  double rebuild_threshold = 36.;
-  // Rest shapes are no thinner than this times the median boundary edge.
-  double min_height_ratio = 0.05;
+  struct Settings
+  {
+    // Total weight of the scaffold energy, relative to the charts' mean energy.
+    double total_weight = 1e-2;
+    // A scaffold triangle whose energy density grew by more than this since
+    // it was built is too squeezed: rebuild.
+    double rebuild_threshold = 36.;
+    // Rest shapes are no thinner than this times the median boundary edge.
+    double min_height_ratio = 0.05;
+  };
+  Settings settings;
   double min_height = 0;
 
   std::size_t number_of_vertices() const { return pos.size() / 2; }
@@ -123,7 +127,7 @@ struct Scaffold
         length.push_back(std::hypot(cm.uv[2*boundary[i]] - cm.uv[2*boundary[i+1]],
                                     cm.uv[2*boundary[i]+1] - cm.uv[2*boundary[i+1]+1]));
       std::nth_element(length.begin(), length.begin() + length.size() / 2, length.end());
-      min_height = length.empty() ? 0. : min_height_ratio * length[length.size() / 2];
+      min_height = length.empty() ? 0. : settings.min_height_ratio * length[length.size() / 2];
     }
     // the box, a few vertices per side so that its triangles stay reasonable
     const int per_side = 4;
@@ -242,7 +246,7 @@ struct Scaffold
       weight.push_back(0.5 * rest_det);
       total_area += 0.5 * rest_det;
     }
-    for(double& w : weight) w *= total_weight / total_area;
+    for(double& w : weight) w *= settings.total_weight / total_area;
     built_density.assign(weight.size(), 0.);
     std::vector<double> x(cm.uv);
     x.insert(x.end(), pos.begin(), pos.end());
