@@ -41,9 +41,9 @@ struct Run
 };
 
 template <typename NP>
-void run(const std::string& name, Run& r, const NP& np)
+void run(const std::string& name, Run& r, const NP& np, const std::string& dir = SMSO_DATA_DIR)
 {
-  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/" + name, r.sm));
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(dir + "/" + name, r.sm));
   r.uv = r.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   r.seam = r.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   r.result = SMSO::optimize_seams(r.sm, r.uv, SMSO_np::combine(SMSO_np::edge_is_seam_map(r.seam), np));
@@ -291,10 +291,11 @@ BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)
 
 BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
 {
-  // The bishop's flattening folds over itself unless the space around the
-  // chart is meshed.
+  // The octopus' flattening folds its tentacles over each other unless the
+  // space around the chart is meshed (a fixed lambda keeps the runs short).
+  const std::string dir = SMSO_TEST_DATA_DIR, name = "octopus_mainComp_f6000.obj";
   Run free_run, bijective_run;
-  run("bishop_part_f1000.obj", free_run, SMSO_np::combine(SMSO_np::distortion_bound(4.1), SMSO_np::bijective(false)));
+  run(name, free_run, SMSO_np::combine(SMSO_np::seam_weight(0.3), SMSO_np::bijective(false)), dir);
   BOOST_TEST(free_run.result.status == SMSO::OK);
   BOOST_TEST(free_run.result.overlapping_triangle_pairs > 0u);
   BOOST_TEST(!free_run.result.bijective);
@@ -303,9 +304,8 @@ BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
   BOOST_TEST(!SMSO::is_bijective(free_run.sm, free_run.uv));
   BOOST_TEST(SMSO::number_of_flipped_triangles(free_run.sm, free_run.uv) == 0u);
 
-  run("bishop_part_f1000.obj", bijective_run, SMSO_np::distortion_bound(4.1));
+  run(name, bijective_run, SMSO_np::seam_weight(0.3), dir);
   BOOST_TEST(bijective_run.result.status == SMSO::OK);
-  BOOST_TEST(bijective_run.result.distortion <= 4.1);
   BOOST_TEST(bijective_run.result.scaffold_rebuilds > 0u);
   BOOST_TEST(SMSO::is_bijective(bijective_run.sm, bijective_run.uv));
   check_valid(bijective_run);

@@ -172,9 +172,10 @@ inline double signed_area_2(const std::array<double, 2>& a,
 /// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
 /// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
 /// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
-/// of two edges sharing a vertex (the shortest such pair whose edges are not on
-/// one triangle). On a surface with long protrusions (an octopus' tentacles),
-/// Tutte's map of that slit squeezes the protrusions until triangles have zero
+/// of two edges sharing a vertex: at the vertex farthest from the chart's
+/// centroid (the tip of a protrusion, where seams tend to end), the two edges
+/// not on one triangle that make the straightest line. On a surface with long
+/// protrusions (an octopus' tentacles), Tutte's map of that slit squeezes the protrusions until triangles have zero
 /// area in double precision: the chart is then slit along a shortest path
 /// (Dijkstra on the 3D edge lengths) between two approximately farthest
 /// vertices instead, and if that map still has a flipped or degenerate
@@ -397,13 +398,53 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
                      (p[2] - q[2]) * (p[2] - q[2]));
   };
 
-  // The first choice: the shortest pair of edges at one vertex not on a common
-  // triangle (consecutive in the ring); a tetrahedron-like ring has none, then
-  // any pair will do. Returns one corner side per edge.
+  // The first choice: two edges at one vertex not on a common triangle
+  // (consecutive in the ring). Returns one corner side per edge.
   auto two_edge_slit = [&](int k) -> std::vector<int>
   {
     double best = std::numeric_limits<double>::infinity();
     int best_a = -1, best_b = -1;
+    // The vertex farthest from the chart's centroid, a protrusion's tip
+    // where a seam is likely to end anyway; its straightest pair of edges.
+    {
+      double centroid[3] = { 0, 0, 0 }, count = 0;
+      for(int c = 0; c < nc; ++c)
+        if(chart_of_face[c / 3] == k) { for(int d = 0; d < 3; ++d) centroid[d] += P[cv[c]][d]; count += 1; }
+      for(int d = 0; d < 3; ++d) centroid[d] /= count;
+      int tip = -1;
+      double farthest = -1;
+      for(int c = 0; c < nc; ++c)
+      {
+        if(chart_of_face[c / 3] != k) continue;
+        double d2 = 0;
+        for(int d = 0; d < 3; ++d) d2 += (P[cv[c]][d] - centroid[d]) * (P[cv[c]][d] - centroid[d]);
+        if(d2 > farthest) { farthest = d2; tip = c; }
+      }
+      std::vector<int> ring;
+      int r = tip;
+      do { ring.push_back(r); r = prev_c(copp[r]); } while(r != tip && ring.size() <= std::size_t(nc));
+      const std::size_t d = ring.size();
+      const XYZ& o = P[cv[tip]];
+      double straightest = 2; // cosine of the angle between the two edges
+      for(std::size_t i = 0; i < d; ++i)
+        for(std::size_t j = i + 2; j < d; ++j)
+        {
+          if(i == 0 && j == d - 1) continue; // consecutive: on one triangle
+          const XYZ& a = P[cv[prev_c(ring[i])]];
+          const XYZ& b = P[cv[prev_c(ring[j])]];
+          double aa = 0, bb = 0, ab = 0;
+          for(int q = 0; q < 3; ++q)
+          {
+            aa += (a[q] - o[q]) * (a[q] - o[q]);
+            bb += (b[q] - o[q]) * (b[q] - o[q]);
+            ab += (a[q] - o[q]) * (b[q] - o[q]);
+          }
+          const double cosine = ab / std::sqrt(aa * bb);
+          if(cosine < straightest) { straightest = cosine; best_a = ring[i]; best_b = ring[j]; }
+        }
+      if(best_a >= 0) return std::vector<int>{ best_a, best_b };
+    }
+    // else (a tetrahedron-like ring) the shortest such pair anywhere, or any pair
     for(int pass = 0; pass < 2 && best_a < 0; ++pass)
     {
       std::vector<char> vdone(nv, 0);

@@ -350,27 +350,37 @@ private:
     return m_newton.rebuild_pattern();
   }
 
-  // Mean energy density of the faces around each UV vertex, to rank candidates.
+  // Vertices ranked by how much their triangles pull them apart: the spread
+  // (variance) of the incident triangles' energy gradients at the vertex. A
+  // split there lets the two sides follow their own pull (the reference's
+  // filter; ranking by the mean energy density instead gave 10-20% longer
+  // seams on bishop_part_f1000 and dragon_i_f10000).
   void rank_vertices(std::vector<std::pair<double, int> >& boundary, std::vector<std::pair<double, int> >& interior)
   {
     const std::size_t nuv = m_cm.number_of_uv_vertices();
-    std::vector<double> sum(nuv, 0.), area(nuv, 0.);
+    std::vector<double> sum(2 * nuv, 0.), sum2(nuv, 0.), count(nuv, 0.);
     std::vector<int> corner(nuv, -1);
-    Eigen::Matrix2d J;
+    Eigen::Matrix2d J, dJ;
+    double g[6];
     for(std::size_t f = 0; f < m_cm.number_of_faces(); ++f)
     {
       face_jacobian(m_cm, f, m_cm.uv.data(), J);
-      const double e = m_cm.face_area[f] * m_energy.value(J);
+      m_energy.value_and_gradient(J, dJ);
+      element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), m_cm.face_area[f], dJ, Eigen::Matrix4d(), g, nullptr);
       for(int k = 0; k < 3; ++k)
       {
         const int u = m_cm.corner_uv[3*f + k];
-        sum[u] += e; area[u] += m_cm.face_area[f]; corner[u] = int(3*f + k);
+        sum[2*u] += g[2*k]; sum[2*u+1] += g[2*k+1];
+        sum2[u] += g[2*k] * g[2*k] + g[2*k+1] * g[2*k+1];
+        count[u] += 1;
+        corner[u] = int(3*f + k);
       }
     }
     for(std::size_t u = 0; u < nuv; ++u)
     {
       if(corner[u] < 0) continue;
-      const std::pair<double, int> item(-sum[u] / area[u], corner[u]);
+      const double mean2 = (sum[2*u] * sum[2*u] + sum[2*u+1] * sum[2*u+1]) / (count[u] * count[u]);
+      const std::pair<double, int> item(-(sum2[u] / count[u] - mean2), corner[u]);
       (is_boundary_uv_corner(m_cm, corner[u]) ? boundary : interior).push_back(item);
     }
     std::sort(boundary.begin(), boundary.end());
