@@ -172,11 +172,12 @@ inline double signed_area_2(const std::array<double, 2>& a,
 /// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
 /// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
 /// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
-/// of two edges sharing a vertex: at the vertex farthest from the chart's
-/// centroid (the tip of a protrusion, where seams tend to end), the two edges
-/// not on one triangle that make the straightest line. On a surface with long
-/// protrusions (an octopus' tentacles), Tutte's map of that slit squeezes the protrusions until triangles have zero
-/// area in double precision: the chart is then slit along a shortest path
+/// of two edges sharing a vertex: at the vertex farthest from the centroid of
+/// the chart's triangle corners (the tip of a protrusion, where seams tend to
+/// end), the two edges not on one triangle that make the straightest line. On
+/// a surface with long protrusions (an octopus' tentacles), Tutte's map of that
+/// slit squeezes the protrusions until triangles have zero area in double
+/// precision: the chart is then slit along a shortest path
 /// (Dijkstra on the 3D edge lengths) between two approximately farthest
 /// vertices instead, and if that map still has a flipped or degenerate
 /// triangle, mapped with Floater's mean value coordinates on the same path. A
@@ -398,6 +399,16 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
                      (p[2] - q[2]) * (p[2] - q[2]));
   };
 
+  // Ring of corner sides ending at the vertex of corner c: H[r] for
+  // r = c, prev(copp(c)), ...
+  auto ring_of = [&](int c) -> std::vector<int>
+  {
+    std::vector<int> ring;
+    int r = c;
+    do { ring.push_back(r); r = prev_c(copp[r]); } while(r != c && ring.size() <= std::size_t(nc));
+    return ring;
+  };
+
   // The first choice: two edges at one vertex not on a common triangle
   // (consecutive in the ring). Returns one corner side per edge.
   auto two_edge_slit = [&](int k) -> std::vector<int>
@@ -407,22 +418,24 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     // The vertex farthest from the chart's centroid, a protrusion's tip
     // where a seam is likely to end anyway; its straightest pair of edges.
     {
-      double centroid[3] = { 0, 0, 0 }, count = 0;
-      for(int c = 0; c < nc; ++c)
-        if(chart_of_face[c / 3] == k) { for(int d = 0; d < 3; ++d) centroid[d] += P[cv[c]][d]; count += 1; }
-      for(int d = 0; d < 3; ++d) centroid[d] /= count;
+      const int* faces_begin = chart_faces.data() + chart_face_start[k];
+      const int* faces_end = chart_faces.data() + chart_face_start[k + 1];
+      double centroid[3] = { 0, 0, 0 };
+      for(const int* f = faces_begin; f != faces_end; ++f)
+        for(int j = 0; j < 3; ++j)
+          for(int d = 0; d < 3; ++d) centroid[d] += P[cv[3 * *f + j]][d];
+      for(int d = 0; d < 3; ++d) centroid[d] /= 3. * double(faces_end - faces_begin);
       int tip = -1;
       double farthest = -1;
-      for(int c = 0; c < nc; ++c)
-      {
-        if(chart_of_face[c / 3] != k) continue;
-        double d2 = 0;
-        for(int d = 0; d < 3; ++d) d2 += (P[cv[c]][d] - centroid[d]) * (P[cv[c]][d] - centroid[d]);
-        if(d2 > farthest) { farthest = d2; tip = c; }
-      }
-      std::vector<int> ring;
-      int r = tip;
-      do { ring.push_back(r); r = prev_c(copp[r]); } while(r != tip && ring.size() <= std::size_t(nc));
+      for(const int* f = faces_begin; f != faces_end; ++f)
+        for(int j = 0; j < 3; ++j)
+        {
+          const int c = 3 * *f + j;
+          double d2 = 0;
+          for(int d = 0; d < 3; ++d) d2 += (P[cv[c]][d] - centroid[d]) * (P[cv[c]][d] - centroid[d]);
+          if(d2 > farthest) { farthest = d2; tip = c; }
+        }
+      const std::vector<int> ring = ring_of(tip);
       const std::size_t d = ring.size();
       const XYZ& o = P[cv[tip]];
       double straightest = 2; // cosine of the angle between the two edges
@@ -452,10 +465,7 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
       {
         if(chart_of_face[c / 3] != k || vdone[cv[c]]) continue;
         vdone[cv[c]] = 1;
-        // ring of corner sides ending at this vertex: H[r] for r = c, prev(copp(c)), ...
-        std::vector<int> ring;
-        int r = c;
-        do { ring.push_back(r); r = prev_c(copp[r]); } while(r != c && ring.size() <= std::size_t(nc));
+        const std::vector<int> ring = ring_of(c);
         const std::size_t d = ring.size();
         std::vector<double> len(d);
         for(std::size_t i = 0; i < d; ++i)
