@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 #include <string>
 #include <vector>
@@ -395,4 +396,47 @@ BOOST_AUTO_TEST_CASE(the_scaffold_fills_the_box_around_the_charts)
   cm.uv[2 * cm.corner_uv[0]] += 1e3;
   BOOST_TEST(!scaffold.build(cm));
   BOOST_TEST(scaffold.empty());
+}
+
+BOOST_AUTO_TEST_CASE(moving_an_ear_across_a_seam_shortens_it_by_the_stencils_figures)
+{
+  // Every seam ear of a few results: the shift keeps the cut valid, shortens
+  // the seams by exactly the two ear edges minus the third, and changes E_SD
+  // by exactly what its stencil solve predicted (the stencil holds every
+  // face whose corners move).
+  std::size_t ears = 0;
+  for(const std::string name : { "cat_f1500.obj", "sphere_f1522.obj" })
+  {
+    Run r;
+    run(name, r, SMSO_np::combine(SMSO_np::seam_weight(0.025), SMSO_np::bijective(false)));
+    SMSO::internal::Cut_mesh cm;
+    cut_mesh_of(r, cm);
+    const std::vector<double> no_weight(cm.corner_vertex.size(), 1.);
+    const SMSO::Symmetric_Dirichlet_energy sd;
+    SMSO::internal::Topology_step<SMSO::Symmetric_Dirichlet_energy> step(cm, sd, no_weight);
+    std::vector<SMSO::internal::Operation> shifts;
+    step.shifts(shifts);
+    BOOST_TEST_MESSAGE(name << ": " << shifts.size() << " seam ears");
+    ears += shifts.size();
+    for(const SMSO::internal::Operation& op : shifts)
+    {
+      SMSO::internal::Cut_mesh shifted = cm;
+      SMSO::internal::Topology_step<SMSO::Symmetric_Dirichlet_energy>::apply(shifted, step.vertex_corners(), op);
+      BOOST_TEST(SMSO::internal::check_invariants(shifted) == "");
+      BOOST_TEST(shifted.number_of_uv_vertices() == cm.number_of_uv_vertices() - 1);
+      const int c0 = op.corners[0], c1 = op.corners[1], c2 = op.corners[2];
+      // the halfedges ending at the ear's corners: v2->v0 (new seam), v0->v1 and v1->v2 (closed)
+      const double expected = cm.edge_length(c0) - cm.edge_length(c1) - cm.edge_length(c2);
+      BOOST_TEST(expected < 0);
+      BOOST_TEST(std::abs(shifted.seam_length() - cm.seam_length() - expected) <= 1e-12 * cm.seam_length());
+      BOOST_TEST(std::abs(op.d_se * cm.normalization_radius() - expected) <= 1e-12 * cm.seam_length());
+      BOOST_TEST(!shifted.is_seam(c1));
+      BOOST_TEST(!shifted.is_seam(c2));
+      BOOST_TEST(shifted.is_seam(c0));
+      const double d_sd = SMSO::internal::total_energy(shifted, sd, shifted.uv.data()) -
+                          SMSO::internal::total_energy(cm, sd, cm.uv.data());
+      BOOST_TEST(std::abs(d_sd - op.d_sd) <= 1e-9);
+    }
+  }
+  BOOST_TEST(ears > 0u);
 }

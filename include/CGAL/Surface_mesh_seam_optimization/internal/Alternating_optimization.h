@@ -117,7 +117,7 @@ public:
     if(!m_settings.fixed_lambda)
     {
       const double b = m_settings.distortion_bound;
-      if(e_sd <= b && e_sd >= b - 1e-4) { status = polish_with_merges(); return false; }
+      if(e_sd <= b && e_sd >= b - 1e-4) { status = polish_seams(); return false; }
       // A stationary (E_se, E_SD) seen before: the dual step only cycles
       // split/merge pairs from here (lambda drifts in its last digits).
       const auto key = std::make_pair(std::llround(e_se * 1e6), std::llround(e_sd * 1e5));
@@ -168,7 +168,7 @@ public:
       {
         restore_best();
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
-        status = polish_with_merges();
+        status = polish_seams();
         if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
       }
       if(!m_settings.fixed_lambda)
@@ -244,9 +244,10 @@ private:
     return any;
   }
 
-  // At the bound: zip seams back while the bound still holds after descent
-  // (a failed try is undone, and ends the polish).
-  Error_code polish_with_merges()
+  // At the bound: zip seams back, or move seam ears across (shorter seams
+  // through the same vertices but one), while the bound still holds after
+  // descent (a failed try is undone; five end the polish).
+  Error_code polish_seams()
   {
     // whatever ends the polish, the best configuration it leaves is polished
     struct Mark { bool& polished; ~Mark() { polished = true; } };
@@ -260,6 +261,7 @@ private:
       {
         Phase_timer timer(m_timings.topology);
         m_topology.merges(ops);
+        m_topology.shifts(ops);
       }
       const Operation* best = nullptr;
       for(const Operation& op : ops)

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Candidate topology operations (boundary split, interior split, corner
-// merge), each scored by a local stencil solve, and their application as
-// corner relabellings.
+// merge, seam shift), each scored by a local stencil solve, and their
+// application as corner relabellings.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_TOPOLOGY_STEP_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_TOPOLOGY_STEP_H
@@ -22,13 +22,16 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-enum Operation_type { BOUNDARY_SPLIT, INTERIOR_SPLIT, CORNER_MERGE };
+enum Operation_type { BOUNDARY_SPLIT, INTERIOR_SPLIT, CORNER_MERGE, SEAM_SHIFT };
 
 struct Operation
 {
   Operation_type type = BOUNDARY_SPLIT;
-  std::vector<int> corners;    // split: corners that get the new UV vertex
-  int uv_a = -1, uv_b = -1;    // split: the UV vertex split; merge: b is merged into a
+  std::vector<int> corners;    // split: corners that get the new UV vertex; shift: the ear's corners
+  int uv_a = -1, uv_b = -1;    // split: the UV vertex split; merge, shift: b is merged into a
+  std::vector<int> labels;     // shift: the ear corners' new UV vertices
+  std::vector<int> moved;      // shift: UV vertices moved by the local solve ...
+  std::vector<double> moved_uv; // ... and where to
   std::vector<int> tips;       // corners at the new seam tips (fracture propagation)
   double d_sd = 0;             // change of E_SD (local solve)
   double d_se = 0;             // change of the normalized (weighted) seam length
@@ -123,9 +126,51 @@ public:
       if(merge_at(int(h), op)) out.push_back(op);
   }
 
+  // Moving an ear of a seam across it: where a face has two seam edges at
+  // corner c (its UV vertex there has no other face) and the other side of
+  // the seam is one UV vertex, the face joins the other side and the seam
+  // runs along its third edge instead (shorter, by the triangle inequality).
+  bool shift_at(int c, Operation& op)
+  {
+    const int h1 = c, h2 = Cut_mesh::next(c), h0 = Cut_mesh::prev(c); // v0->v1, v1->v2, v2->v0
+    if(!m_cm.is_seam(h1) || !m_cm.is_seam(h2) || m_cm.opposite[h0] < 0 || m_cm.is_seam(h0)) return false;
+    const int o1 = m_cm.opposite[h1], o2 = m_cm.opposite[h2];
+    const int b1 = m_cm.corner_uv[o2];
+    if(m_cm.corner_uv[Cut_mesh::prev(o1)] != b1) return false;
+    const int l0 = m_cm.corner_uv[o1], l2 = m_cm.corner_uv[Cut_mesh::prev(o2)];
+    const bool tip0 = l0 == m_cm.corner_uv[h0], tip2 = l2 == m_cm.corner_uv[h2];
+    if(tip0 && tip2) return false; // a two-edge slit: a merge's business
+    op = Operation();
+    op.type = SEAM_SHIFT;
+    op.uv_a = b1; op.uv_b = m_cm.corner_uv[c];
+    op.corners = { h0, c, h2 };  // corners at v0, v1, v2
+    op.labels = { l0, b1, l2 };
+    op.d_se = seam_cost(h0) - seam_cost(h1) - seam_cost(h2);
+    if(!(op.d_se < 0)) return false;
+    return evaluate_shift(op);
+  }
+
+  void shifts(std::vector<Operation>& out)
+  {
+    Operation op;
+    for(std::size_t c = 0; c < m_cm.corner_vertex.size(); ++c)
+      if(shift_at(int(c), op)) out.push_back(op);
+  }
+
   // Applies `op` to `cm` (which must be the mesh this step reads).
   static void apply(Cut_mesh& cm, const Vertex_corners& vc, const Operation& op)
   {
+    if(op.type == SEAM_SHIFT)
+    {
+      for(std::size_t k = 0; k < op.moved.size(); ++k)
+      {
+        cm.uv[2*op.moved[k]] = op.moved_uv[2*k];
+        cm.uv[2*op.moved[k] + 1] = op.moved_uv[2*k + 1];
+      }
+      for(int k = 0; k < 3; ++k) cm.corner_uv[op.corners[k]] = op.labels[k];
+      merge_uv_vertices(cm, vc, op.uv_a, op.uv_b); // b has no corner left: removes it
+      return;
+    }
     if(op.type == CORNER_MERGE)
     {
       cm.uv[2*op.uv_a] = op.new_u[0];
@@ -284,13 +329,81 @@ private:
     return true;
   }
 
+  // Stencil = every face at the UV vertices the shift touches; free: those
+  // vertices (the ear's, on both sides). The ear's apex starts where its
+  // whole ring is unflipped.
+  bool evaluate_shift(Operation& op)
+  {
+    const int* ear = op.corners.data();
+    int touched[6] = { m_cm.corner_uv[ear[0]], m_cm.corner_uv[ear[1]], m_cm.corner_uv[ear[2]],
+                       op.labels[0], op.labels[1], op.labels[2] };
+    // faces, from the corners of the three 3D vertices
+    m_faces.clear();
+    for(int k = 0; k < 3; ++k)
+    {
+      const int v = m_cm.corner_vertex[ear[k]];
+      for(int i = m_vc.offset[v]; i < m_vc.offset[v + 1]; ++i)
+      {
+        const int cc = m_vc.corners[i];
+        if(std::find(touched, touched + 6, m_cm.corner_uv[cc]) == touched + 6) continue;
+        if(std::find(m_faces.begin(), m_faces.end(), cc / 3) == m_faces.end()) m_faces.push_back(cc / 3);
+      }
+    }
+    auto label = [&](int cc) {
+      for(int k = 0; k < 3; ++k) if(cc == ear[k]) return op.labels[k];
+      return m_cm.corner_uv[cc];
+    };
+    auto build = [&](bool after) {
+      m_stencil.clear(); m_ids.clear();
+      if(after) // the ear's new corners first (the apex is local 1), then its old sides
+        for(int u : { op.labels[0], op.labels[1], op.labels[2], m_cm.corner_uv[ear[0]], m_cm.corner_uv[ear[2]] })
+          local_id(u);
+      m_stencil.n_free = int(m_ids.size());
+      for(int f : m_faces)
+      {
+        m_stencil.faces.push_back(f);
+        for(int j = 0; j < 3; ++j) m_stencil.local.push_back(local_id(after ? label(3*f + j) : m_cm.corner_uv[3*f + j]));
+      }
+    };
+    build(false);
+    const double before = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
+    build(true);
+    // the apex (local 1) starts at its far-side copy, else nearer its new ring's centre
+    const int apex = 1;
+    double cx = 0, cy = 0; int n = 0;
+    for(std::size_t i = 0; i < m_stencil.faces.size(); ++i)
+      for(int j = 0; j < 3; ++j)
+        if(m_stencil.local[3*i + j] == apex)
+          for(int q = 1; q < 3; ++q)
+          {
+            const int l = m_stencil.local[3*i + (j + q) % 3];
+            cx += m_stencil.pos[2*l]; cy += m_stencil.pos[2*l + 1]; ++n;
+          }
+    cx /= n; cy /= n;
+    const double px = m_stencil.pos[2*apex], py = m_stencil.pos[2*apex + 1];
+    double start = std::numeric_limits<double>::infinity();
+    for(double t : { 0., 0.5, 1. })
+    {
+      m_stencil.pos[2*apex] = (1 - t) * px + t * cx;
+      m_stencil.pos[2*apex + 1] = (1 - t) * py + t * cy;
+      start = stencil_energy(m_cm, m_energy, m_stencil, m_stencil.pos.data());
+      if(start < std::numeric_limits<double>::infinity()) break;
+    }
+    if(!(start < std::numeric_limits<double>::infinity())) return false;
+    const double after = optimize_stencil(m_cm, m_energy, m_stencil, 12);
+    op.d_sd = after - before;
+    op.moved.assign(m_ids.begin(), m_ids.begin() + m_stencil.n_free);
+    op.moved_uv.assign(m_stencil.pos.begin(), m_stencil.pos.begin() + 2 * m_stencil.n_free);
+    return true;
+  }
+
   const Cut_mesh& m_cm;
   const Energy& m_energy;
   Vertex_corners m_vc;
   const std::vector<double>& m_weight;
   const Scaffold* m_scaffold = nullptr;
   Local_stencil m_stencil;
-  std::vector<int> m_ids, m_fan;
+  std::vector<int> m_ids, m_fan, m_faces;
 };
 
 } // namespace internal
