@@ -331,6 +331,21 @@ BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
   BOOST_TEST(accepted.status == SMSO::OK);
 }
 
+BOOST_AUTO_TEST_CASE(the_scaffold_waits_until_charts_overlap)
+{
+  // The cat's stationary points never overlap: the bijective run is the free
+  // run, and never meshes a scaffold.
+  Run free_run, bijective_run;
+  run("cat_f1500.obj", free_run, SMSO_np::bijective(false));
+  run("cat_f1500.obj", bijective_run, SMSO_np::bijective(true));
+  BOOST_TEST(free_run.result.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(bijective_run.result.scaffold_rebuilds == 0u);
+  BOOST_TEST(bijective_run.result.seam_length == free_run.result.seam_length);
+  BOOST_TEST(bijective_run.result.distortion == free_run.result.distortion);
+  BOOST_TEST(bijective_run.result.iterations == free_run.result.iterations);
+  check_valid(bijective_run);
+}
+
 BOOST_AUTO_TEST_CASE(is_bijective_on_hand_made_maps)
 {
   // Two triangles sharing an edge; the second folded back over the first

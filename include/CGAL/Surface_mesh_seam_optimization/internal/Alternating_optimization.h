@@ -88,9 +88,12 @@ public:
   {
     if(m_settings.bijective)
     {
+      // the scaffold waits until it is needed (see check_overlaps()); meshing
+      // it once checks that the initial map is bijective
+      m_lazy = true;
       if(!build_scaffold()) return ERROR_OVERLAPPING_UV_MAP;
-      m_newton.set_scaffold(&m_scaffold);
-      m_topology.set_scaffold(&m_scaffold);
+      m_scaffold.clear();
+      keep_as_safe();
     }
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     return descend();
@@ -111,6 +114,7 @@ public:
   // `status` then says why (OK: converged).
   bool step(Error_code& status)
   {
+    if(!check_overlaps(status)) return false;
     const double e_sd = distortion();
     const double e_se = seam_cost();
     record(e_sd, e_se);
@@ -159,6 +163,11 @@ public:
   // Keeps the best feasible configuration (bound mode).
   Error_code finish(Error_code status)
   {
+    // whatever stopped a run without its scaffold, what it leaves does not overlap
+    if(m_lazy && count_overlapping_pairs(m_cm, 1) > 0)
+    {
+      m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
+    }
     if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS)
     {
       record(distortion(), seam_cost());
@@ -193,6 +202,34 @@ public:
   }
 
 private:
+  // Bijectivity, lazily: the charts run free while the stationary points do
+  // not overlap (a scaffold resists the charts' motion and changes which cuts
+  // pay); at the first that does, back to the last that did not, and on with
+  // the scaffold from there. False (status set) if the run must end.
+  bool check_overlaps(Error_code& status)
+  {
+    if(!m_lazy) return true;
+    if(count_overlapping_pairs(m_cm, 1) == 0) { keep_as_safe(); return true; }
+    m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
+    m_lambda = m_safe_lambda;
+    m_tips.clear();
+    m_seen.clear();
+    m_lazy = false;
+    ++m_scaffold_rebuilds;
+    // (a scaffold that cannot be meshed ends the run at its best feasible configuration)
+    if(!build_scaffold()) { m_lazy = true; status = OK; return false; }
+    m_topology.set_scaffold(&m_scaffold);
+    if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
+    status = descend();
+    return status == OK;
+  }
+
+  void keep_as_safe()
+  {
+    m_safe_corner_uv = m_cm.corner_uv; m_safe_uv = m_cm.uv; m_safe_uv_vertex = m_cm.uv_vertex;
+    m_safe_lambda = m_lambda;
+  }
+
   // Newton to a stationary point; between iterations, the seams created by
   // the last split are extended from their tips while that beats Newton.
   Error_code descend()
@@ -299,7 +336,7 @@ private:
       Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
     }
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
-    if(m_settings.bijective && !build_scaffold())
+    if(m_settings.bijective && !m_lazy && !build_scaffold())
     {
       m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
       build_scaffold();
@@ -326,7 +363,7 @@ private:
     if(!fresh.build(m_cm)) return false;
     m_scaffold = std::move(fresh);
     // (again, if a mismatched scaffold had to be dropped: see rebuild_scaffold())
-    if(m_settings.bijective) m_newton.set_scaffold(&m_scaffold);
+    if(m_settings.bijective && !m_lazy) m_newton.set_scaffold(&m_scaffold);
     return true;
   }
 
@@ -342,7 +379,7 @@ private:
 
   bool rebuild_scaffold()
   {
-    if(m_settings.bijective)
+    if(m_settings.bijective && !m_lazy)
     {
       ++m_scaffold_rebuilds;
       // a kept scaffold must still match the UV vertices (it does unless a
@@ -404,7 +441,7 @@ private:
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb), [&](const tbb::blocked_range<std::size_t>& range) {
         std::unique_ptr<Topology_step<Energy> >& local = m_thread_topology.local();
         if(!local) local.reset(new Topology_step<Energy>(m_cm, m_energy, m_weight));
-        local->set_scaffold(m_settings.bijective ? &m_scaffold : nullptr);
+        local->set_scaffold(m_settings.bijective && !m_lazy ? &m_scaffold : nullptr);
         for(std::size_t i = range.begin(); i != range.end(); ++i)
           local->boundary_splits(boundary[i].second, per_vertex[i]);
       });
@@ -482,6 +519,7 @@ private:
   {
     if(m_settings.fixed_lambda || e_sd > m_settings.distortion_bound) return;
     if(m_has_best && e_se >= m_best_se) return;
+    if(m_lazy && count_overlapping_pairs(m_cm, 1) > 0) return; // not a result
     m_has_best = true;
     m_best_polished = false;
     m_best_se = e_se;
@@ -521,6 +559,11 @@ private:
   std::vector<int> m_tips;
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;
+  bool m_lazy = false; // bijective, but no scaffold yet
+
+  double m_safe_lambda = 0;
+  std::vector<int> m_safe_corner_uv, m_safe_uv_vertex;
+  std::vector<double> m_safe_uv;
   bool m_has_best = false;
   bool m_best_polished = false;
   double m_best_se = 0, m_best_lambda = 0;
