@@ -164,10 +164,7 @@ public:
   Error_code finish(Error_code status)
   {
     // whatever stopped a run without its scaffold, what it leaves does not overlap
-    if(m_lazy && count_overlapping_pairs(m_cm, 1) > 0)
-    {
-      m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
-    }
+    if(m_lazy && count_overlapping_pairs(m_cm, 1) > 0) restore_safe();
     if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS)
     {
       record(distortion(), seam_cost());
@@ -210,7 +207,7 @@ private:
   {
     if(!m_lazy) return true;
     if(count_overlapping_pairs(m_cm, 1) == 0) { keep_as_safe(); return true; }
-    m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
+    restore_safe();
     m_lambda = m_safe_lambda;
     m_tips.clear();
     m_seen.clear();
@@ -222,6 +219,13 @@ private:
     if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
     status = descend();
     return status == OK;
+  }
+
+  bool scaffold_on() const { return m_settings.bijective && !m_lazy; }
+
+  void restore_safe()
+  {
+    m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
   }
 
   void keep_as_safe()
@@ -336,7 +340,7 @@ private:
       Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
     }
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
-    if(m_settings.bijective && !m_lazy && !build_scaffold())
+    if(scaffold_on() && !build_scaffold())
     {
       m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
       build_scaffold();
@@ -363,7 +367,7 @@ private:
     if(!fresh.build(m_cm)) return false;
     m_scaffold = std::move(fresh);
     // (again, if a mismatched scaffold had to be dropped: see rebuild_scaffold())
-    if(m_settings.bijective && !m_lazy) m_newton.set_scaffold(&m_scaffold);
+    if(scaffold_on()) m_newton.set_scaffold(&m_scaffold);
     return true;
   }
 
@@ -379,7 +383,7 @@ private:
 
   bool rebuild_scaffold()
   {
-    if(m_settings.bijective && !m_lazy)
+    if(scaffold_on())
     {
       ++m_scaffold_rebuilds;
       // a kept scaffold must still match the UV vertices (it does unless a
@@ -441,7 +445,7 @@ private:
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb), [&](const tbb::blocked_range<std::size_t>& range) {
         std::unique_ptr<Topology_step<Energy> >& local = m_thread_topology.local();
         if(!local) local.reset(new Topology_step<Energy>(m_cm, m_energy, m_weight));
-        local->set_scaffold(m_settings.bijective && !m_lazy ? &m_scaffold : nullptr);
+        local->set_scaffold(scaffold_on() ? &m_scaffold : nullptr);
         for(std::size_t i = range.begin(); i != range.end(); ++i)
           local->boundary_splits(boundary[i].second, per_vertex[i]);
       });
