@@ -175,6 +175,28 @@ BOOST_AUTO_TEST_CASE(a_lower_bound_gives_longer_seams)
   check_valid(tight);
 }
 
+BOOST_AUTO_TEST_CASE(recut_rounds_keep_the_bound_and_never_lengthen_the_seams)
+{
+  // Each round starts from the best result so far and only a shorter one
+  // that meets the bound replaces it; on the cat the first round finds one.
+  Run once, recut;
+  run("cat_f1500.obj", once, SMSO_np::number_of_recut_rounds(0));
+  run("cat_f1500.obj", recut, SMSO_np::number_of_recut_rounds(6));
+  BOOST_TEST(once.result.status == SMSO::OK);
+  BOOST_TEST(recut.result.status == SMSO::OK);
+  BOOST_TEST(recut.result.distortion <= 4.1);
+  BOOST_TEST(recut.result.iterations > once.result.iterations);
+  BOOST_TEST(recut.result.seam_length < once.result.seam_length);
+  check_valid(recut);
+  // a cap reached during the rounds ends them, not the run: OK, the best so far
+  Run capped;
+  run("cat_f1500.obj", capped, SMSO_np::maximum_number_of_iterations(once.result.iterations + 5));
+  BOOST_TEST(capped.result.status == SMSO::OK);
+  BOOST_TEST(capped.result.distortion <= 4.1);
+  BOOST_TEST(capped.result.seam_length <= once.result.seam_length);
+  check_valid(capped);
+}
+
 BOOST_AUTO_TEST_CASE(fixed_lambda_stops_at_a_stationary_point)
 {
   Run r;
@@ -201,6 +223,7 @@ BOOST_AUTO_TEST_CASE(bad_parameters_are_refused_and_nothing_is_written)
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::distortion_bound(3.9)).status == SMSO::ERROR_WRONG_PARAMETER);
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::seam_weight(1.0)).status == SMSO::ERROR_WRONG_PARAMETER);
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::seam_weight(-0.1)).status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::number_of_recut_rounds(-1)).status == SMSO::ERROR_WRONG_PARAMETER);
   bool untouched = true;
   for(halfedge_descriptor h : sm.halfedges()) untouched = untouched && uv[h] == Point_2(-1, -1);
   BOOST_TEST(untouched);

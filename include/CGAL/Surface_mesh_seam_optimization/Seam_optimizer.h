@@ -53,6 +53,13 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
   settings.max_iterations =
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
+  const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds), 6);
+  if(rounds < 0)
+  {
+    message = "number_of_recut_rounds must be >= 0";
+    return ERROR_WRONG_PARAMETER;
+  }
+  settings.recut_rounds = rounds;
 
   Error_code ec = initialize_cut_mesh(tm, uvmap, np, cm, copy, message);
   if(ec != OK) return ec;

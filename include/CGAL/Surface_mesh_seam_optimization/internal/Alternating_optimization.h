@@ -50,6 +50,11 @@ struct Alternating_settings
   double lambda = 0.999;            // initial (bound mode) or fixed value
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
   std::size_t max_iterations = 100000;
+  // bound mode: after the first result, unzip this fraction of the seams
+  // where they buy least and alternate again, until two rounds in a row
+  // find nothing shorter
+  int recut_rounds = 6;
+  double recut_fraction = 0.1;
   bool bijective = false;           // scaffold around the charts
   Newton_settings newton;
 };
@@ -176,6 +181,24 @@ public:
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
         status = polish_seams();
         if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
+      }
+      int idle = 0;
+      for(int r = 0; r < m_settings.recut_rounds && idle < 2 && status == OK && !m_settings.fixed_lambda && m_has_best; ++r)
+      {
+        const double before = m_best_se;
+        restore_best();
+        if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
+        status = recut(m_settings.recut_fraction);
+        if(status == OK && !m_best_polished)
+        {
+          restore_best();
+          if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
+          status = polish_seams();
+        }
+        // the iteration cap ends the rounds, not the converged run they improve
+        if(status == WARNING_MAXIMUM_ITERATIONS) { status = OK; break; }
+        if(status != OK && status != WARNING_CANCELLED) return status;
+        idle = m_best_se < before ? 0 : idle + 1;
       }
       if(!m_settings.fixed_lambda)
       {
@@ -326,6 +349,39 @@ private:
       ++failures;
     }
     return OK;
+  }
+
+  // A perturbation of the result (iterated local search): unzip the seams
+  // where they buy least (merges by distortion per seam length) until they
+  // are `fraction` shorter, and alternate from there (at the result's
+  // lambda, not at the smaller one the dual step had on its way down).
+  Error_code recut(double fraction)
+  {
+    const double target = seam_cost() * (1 - fraction);
+    std::vector<Operation> ops;
+    std::vector<std::pair<int, int> > failed; // (uv_a, uv_b) of merges whose result would overlap
+    while(seam_cost() > target)
+    {
+      ops.clear();
+      {
+        Phase_timer timer(m_timings.topology);
+        m_topology.merges(ops);
+      }
+      const Operation* best = nullptr;
+      for(const Operation& op : ops)
+        if(op.d_se < 0 && (!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) &&
+           std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) == failed.end())
+          best = &op;
+      if(!best) break;
+      if(!apply(*best)) failed.emplace_back(best->uv_a, best->uv_b);
+      if(m_cancelled) return WARNING_CANCELLED;
+    }
+    m_tips.clear();
+    m_seen.clear();
+    m_best_at = m_stationary_points; // patience starts anew
+    Error_code status = descend();
+    while(status == OK && step(status)) {}
+    return status;
   }
 
   // Applies op; with a scaffold, an op whose result would overlap is undone
