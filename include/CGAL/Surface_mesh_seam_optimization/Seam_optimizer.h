@@ -133,7 +133,9 @@ public:
   bool is_running() const { return m_running; }
 
   /// One alternation; returns `false` when the optimization is over (then
-  /// the best feasible configuration has been restored, in bound mode).
+  /// the best feasible configuration has been restored, in bound mode). In
+  /// bound mode the step that ends the run also runs the recut rounds
+  /// (`number_of_recut_rounds`), which may take as long as the run so far.
   bool step()
   {
     if(!m_running) return false;

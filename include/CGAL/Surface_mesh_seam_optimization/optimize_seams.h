@@ -78,7 +78,7 @@ namespace Surface_mesh_seam_optimization {
 ///   \cgalParamNBegin{number_of_recut_rounds}
 ///     \cgalParamDescription{bound mode: after the first result, rounds of unzipping a tenth of the seams where
 ///       they buy least and cutting again from there; the shortest seams that meet the bound are kept, and the
-///       rounds end after two in a row that find none shorter (more time for shorter seams; 0 turns them off).
+///       rounds end at the first that finds none shorter (more time for shorter seams; 0 turns them off).
 ///       Reaching `maximum_number_of_iterations` during these rounds ends them with status `OK`}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd

@@ -51,8 +51,8 @@ struct Alternating_settings
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
   std::size_t max_iterations = 100000;
   // bound mode: after the first result, unzip this fraction of the seams
-  // where they buy least and alternate again, until two rounds in a row
-  // find nothing shorter
+  // where they buy least and alternate again, until a round finds nothing
+  // shorter
   int recut_rounds = 6;
   double recut_fraction = 0.1;
   bool bijective = false;           // scaffold around the charts
@@ -182,8 +182,9 @@ public:
         status = polish_seams();
         if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
       }
-      int idle = 0;
-      for(int r = 0; r < m_settings.recut_rounds && idle < 2 && status == OK && !m_settings.fixed_lambda && m_has_best; ++r)
+      // (a round that finds nothing shorter ends them: the next would start
+      // from the same configuration and, deterministic, do about the same)
+      for(int r = 0; r < m_settings.recut_rounds && status == OK && !m_settings.fixed_lambda && m_has_best; ++r)
       {
         const double before = m_best_se;
         restore_best();
@@ -198,7 +199,7 @@ public:
         // the iteration cap ends the rounds, not the converged run they improve
         if(status == WARNING_MAXIMUM_ITERATIONS) { status = OK; break; }
         if(status != OK && status != WARNING_CANCELLED) return status;
-        idle = m_best_se < before ? 0 : idle + 1;
+        if(!(m_best_se < before)) break;
       }
       if(!m_settings.fixed_lambda)
       {
