@@ -249,12 +249,12 @@ private:
 
   void restore_safe()
   {
-    m_cm.corner_uv = m_safe_corner_uv; m_cm.uv = m_safe_uv; m_cm.uv_vertex = m_safe_uv_vertex;
+    m_safe.restore(m_cm);
   }
 
   void keep_as_safe()
   {
-    m_safe_corner_uv = m_cm.corner_uv; m_safe_uv = m_cm.uv; m_safe_uv_vertex = m_cm.uv_vertex;
+    m_safe.save(m_cm);
     m_safe_lambda = m_lambda;
   }
 
@@ -335,8 +335,8 @@ private:
         if(!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) best = &op;
       }
       if(!best) return OK;
-      const std::vector<int> corner_uv = m_cm.corner_uv, uv_vertex = m_cm.uv_vertex;
-      const std::vector<double> uv = m_cm.uv;
+      Uv_snapshot before;
+      before.save(m_cm);
       const std::pair<int, int> tried(best->uv_a, best->uv_b);
       if(!apply(*best)) { failed.push_back(tried); ++failures; continue; }
       if(m_cancelled) return WARNING_CANCELLED;
@@ -344,7 +344,7 @@ private:
       if(status != OK) return status;
       const double e_sd = distortion();
       if(e_sd <= b) { record(e_sd, seam_cost()); failed.clear(); continue; }
-      m_cm.corner_uv = corner_uv; m_cm.uv_vertex = uv_vertex; m_cm.uv = uv;
+      before.restore(m_cm);
       if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
       failed.push_back(tried);
       ++failures;
@@ -389,9 +389,8 @@ private:
   // (false).
   bool apply(const Operation& op)
   {
-    std::vector<int> corner_uv, uv_vertex;
-    std::vector<double> uv;
-    if(m_settings.bijective) { corner_uv = m_cm.corner_uv; uv_vertex = m_cm.uv_vertex; uv = m_cm.uv; }
+    Uv_snapshot before;
+    if(scaffold_on()) before.save(m_cm);
     {
       Phase_timer timer(m_timings.topology);
       Topology_step<Energy>::apply(m_cm, m_topology.vertex_corners(), op);
@@ -399,7 +398,7 @@ private:
     CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
     if(scaffold_on() && !build_scaffold())
     {
-      m_cm.corner_uv.swap(corner_uv); m_cm.uv_vertex.swap(uv_vertex); m_cm.uv.swap(uv);
+      before.restore(m_cm);
       build_scaffold();
       m_newton.rebuild_pattern();
       ++m_rejected;
@@ -466,7 +465,7 @@ private:
     {
       face_jacobian(m_cm, f, m_cm.uv.data(), J);
       m_energy.value_and_gradient(J, dJ);
-      element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), m_cm.face_area[f], dJ, Eigen::Matrix4d(), g, nullptr);
+      element_gradient(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), m_cm.face_area[f], dJ, g);
       for(int k = 0; k < 3; ++k)
       {
         const int u = m_cm.corner_uv[3*f + k];
@@ -585,17 +584,13 @@ private:
     m_best_polished = false;
     m_best_se = e_se;
     m_best_at = m_stationary_points;
-    m_best_corner_uv = m_cm.corner_uv;
-    m_best_uv = m_cm.uv;
-    m_best_uv_vertex = m_cm.uv_vertex;
+    m_best.save(m_cm);
     m_best_lambda = m_lambda;
   }
 
   void restore_best()
   {
-    m_cm.corner_uv = m_best_corner_uv;
-    m_cm.uv = m_best_uv;
-    m_cm.uv_vertex = m_best_uv_vertex;
+    m_best.restore(m_cm);
     m_lambda = m_best_lambda;
   }
 
@@ -623,13 +618,11 @@ private:
   bool m_lazy = false; // bijective, but no scaffold yet
 
   double m_safe_lambda = 0;
-  std::vector<int> m_safe_corner_uv, m_safe_uv_vertex;
-  std::vector<double> m_safe_uv;
+  Uv_snapshot m_safe;
   bool m_has_best = false;
   bool m_best_polished = false;
   double m_best_se = 0, m_best_lambda = 0;
-  std::vector<int> m_best_corner_uv, m_best_uv_vertex;
-  std::vector<double> m_best_uv;
+  Uv_snapshot m_best;
   CGAL::Real_timer m_timer;
 };
 

@@ -135,6 +135,16 @@ struct Cut_mesh
   double normalization_radius() const { return std::sqrt(total_area / 3.14159265358979323846); }
 };
 
+// A copy of the mutable part of a cut mesh (the UV mesh), to come back to.
+struct Uv_snapshot
+{
+  std::vector<int> corner_uv, uv_vertex;
+  std::vector<double> uv;
+
+  void save(const Cut_mesh& cm) { corner_uv = cm.corner_uv; uv_vertex = cm.uv_vertex; uv = cm.uv; }
+  void restore(Cut_mesh& cm) const { cm.corner_uv = corner_uv; cm.uv_vertex = uv_vertex; cm.uv = uv; }
+};
+
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL

@@ -50,15 +50,21 @@ inline void face_jacobian(const Cut_mesh& cm, std::size_t f, const double* uv, E
                     &cm.rest_inverse[4*f], J);
 }
 
-// Gradient (6) and Hessian (6x6) wrt (u0x,u0y,u1x,u1y,u2x,u2y) from the
-// J-space derivatives, scaled by `w`.
-inline void element_derivatives(const Jacobian_coefficients& k, double w,
-                                const Eigen::Matrix2d& dJ, const Eigen::Matrix4d& HJ,
-                                double* g, Eigen::Matrix<double, 6, 6>* H)
+// Gradient (6) wrt (u0x,u0y,u1x,u1y,u2x,u2y) from the J-space gradient,
+// scaled by `w`.
+inline void element_gradient(const Jacobian_coefficients& k, double w, const Eigen::Matrix2d& dJ, double* g)
 {
   for(int a = 0; a < 3; ++a)
     for(int r = 0; r < 2; ++r)
       g[2*a + r] = w * (dJ(r, 0) * k.c[a][0] + dJ(r, 1) * k.c[a][1]);
+}
+
+// The same and the Hessian (6x6) from the J-space Hessian.
+inline void element_derivatives(const Jacobian_coefficients& k, double w,
+                                const Eigen::Matrix2d& dJ, const Eigen::Matrix4d& HJ,
+                                double* g, Eigen::Matrix<double, 6, 6>* H)
+{
+  element_gradient(k, w, dJ, g);
   if(!H) return;
   // T(r + 2j, 2b + s) = sum_k HJ(r + 2j, s + 2k) c[b][k]
   Eigen::Matrix<double, 4, 6> T;
