@@ -197,6 +197,16 @@ BOOST_AUTO_TEST_CASE(recut_rounds_keep_the_bound_and_never_lengthen_the_seams)
   check_valid(capped);
 }
 
+BOOST_AUTO_TEST_CASE(an_explicit_kernel_gives_the_default_run)
+{
+  Run plain, explicit_np;
+  run("bishop_part_f1000.obj", plain, SMSO_np::bijective(false));
+  run("bishop_part_f1000.obj", explicit_np, SMSO_np::combine(SMSO_np::bijective(false), CGAL::parameters::geom_traits(K())));
+  BOOST_TEST(explicit_np.result.status == SMSO::OK);
+  BOOST_TEST(explicit_np.result.seam_length == plain.result.seam_length);
+  BOOST_TEST(explicit_np.result.distortion == plain.result.distortion);
+}
+
 BOOST_AUTO_TEST_CASE(fixed_lambda_stops_at_a_stationary_point)
 {
   Run r;

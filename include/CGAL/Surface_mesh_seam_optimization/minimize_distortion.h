@@ -79,8 +79,12 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
       for(auto e : edges(tm)) put(scratch_seams, e, bool(get(user_seams, e)));
     }
     auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
-    ec = compute_initial_parameterization(tm, scratch_seams, scratch_uv,
-                                          CGAL::parameters::vertex_point_map(vpm));
+    if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::geom_traits_t>::value)
+      ec = compute_initial_parameterization(
+        tm, scratch_seams, scratch_uv,
+        CGAL::parameters::vertex_point_map(vpm).geom_traits(get_parameter(np, CGAL::internal_np::geom_traits)));
+    else
+      ec = compute_initial_parameterization(tm, scratch_seams, scratch_uv, CGAL::parameters::vertex_point_map(vpm));
     if(ec != OK) { message = "could not compute the initial map"; return ec; }
     read_seam_map(tm, scratch_seams, copy, cm, seam);
     ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
@@ -122,6 +126,11 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points of the vertices}
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
+///       types of the initial map); the optimization itself works in `double`}
+///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_seam_map}
 ///     \cgalParamDescription{a read-write property map `edge_descriptor -> bool`: the fixed seams

@@ -59,6 +59,11 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamDescription{the 3D points}
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
+///       types of the initial map); the optimization itself works in `double`}
+///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{energy}
 ///     \cgalParamDescription{a model of `DistortionEnergy` for the descent steps (the bound is always on E_SD)}
 ///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
