@@ -63,6 +63,7 @@ enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
 // same values as the library's own defaults for each mode.
 const std::size_t default_max_iterations_seams = 100000;   // optimize_seams()
 const std::size_t default_max_iterations_keep = 10000;     // minimize_distortion()
+const std::size_t default_recut_rounds = 6;                 // number_of_recut_rounds()
 const double default_distortion_bound = 4.1;
 
 const char* mode_name(Mode m)
@@ -110,6 +111,8 @@ struct Options
   double seam_weight = 0;
   bool has_max_iterations = false;
   std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
+  bool has_recut_rounds = false;
+  std::size_t recut_rounds = default_recut_rounds; // bound mode only
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
   double time_limit = 0;                  // seconds; 0: none
@@ -184,6 +187,11 @@ void print_help(std::ostream& os)
      << "  --max-iterations N      cap on Newton iterations (default: "
      << default_max_iterations_seams << ", or " << default_max_iterations_keep
      << " with --keep-seams)\n"
+     << "  --recut-rounds N        after the first result at the bound, at most N rounds of\n"
+     << "                          unzipping a tenth of the seams and cutting again, while\n"
+     << "                          that finds shorter seams; 0 for the first result alone\n"
+     << "                          (faster); not with --seam-weight or --keep-seams\n"
+     << "                          (default: " << default_recut_rounds << ")\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
      << "                          write the best result so far (status WARNING_CANCELLED,\n"
      << "                          exit 0); not with --keep-seams (default: none)\n"
@@ -399,6 +407,18 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
       }
       options.has_max_iterations = true;
     }
+    else if(name == "--recut-rounds")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.recut_rounds) || options.recut_rounds > 1000)
+      {
+        error = "option '--recut-rounds' needs an integer in [0, 1000], not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_recut_rounds = true;
+    }
     else
     {
       error = "unknown option '" + arg + "'";
@@ -414,6 +434,12 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
   {
     error = std::string("option '--keep-seams' does not optimize seams: it takes no '") +
             (options.has_distortion_bound ? "--distortion-bound" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.has_recut_rounds && (options.keep_seams || options.has_seam_weight))
+  {
+    error = std::string("option '--recut-rounds' applies to the distortion bound, not to '") +
+            (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
     return Parse_status::ERROR;
   }
   if(options.keep_seams && options.time_limit > 0)
@@ -1101,6 +1127,7 @@ int run(const Options& options)
   request.use_input_uv = options.use_input_uv;
   request.bijective = !options.no_bijectivity;
   request.iteration_cap = options.iteration_cap();
+  request.recut_rounds = int(options.recut_rounds);
   request.progress = [&progress](const SMSO::Seam_optimization_progress& p) { return progress.update(p); };
 
   const auto t_opt = std::chrono::steady_clock::now();

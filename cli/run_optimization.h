@@ -50,6 +50,7 @@ struct Optimization_request
   bool use_input_uv = false;       // start from `uvmap` and the seams in `seams`
   bool bijective = true;
   std::size_t iteration_cap = 0;
+  int recut_rounds = 6;            // DISTORTION_BOUND only
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.
   std::function<bool(const SMSO::Seam_optimization_progress&)> progress;
 };

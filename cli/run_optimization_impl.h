@@ -54,7 +54,8 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
       break;
   }
   return SMSO::optimize_seams(mesh, uvmap,
-                              NP::combine(NP::distortion_bound(request.distortion_bound), with_visitor));
+                              NP::combine(NP::distortion_bound(request.distortion_bound),
+                                          NP::combine(NP::number_of_recut_rounds(request.recut_rounds), with_visitor)));
 }
 
 } // namespace optimize_seams_cli

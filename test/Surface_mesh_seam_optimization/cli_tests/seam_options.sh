@@ -29,6 +29,10 @@ usage_error "exclusive" --distortion-bound 4.2 --seam-weight 0.1
 usage_error "keep-seams" --keep-seams --distortion-bound 4.2
 usage_error "keep-seams" --seam-weight 0.1 --keep-seams
 usage_error "no-bijectivity" --no-bijectivity=1
+usage_error "recut-rounds" --recut-rounds -1
+usage_error "recut-rounds" --recut-rounds abc
+usage_error "keep-seams" --keep-seams --recut-rounds 2
+usage_error "seam-weight" --seam-weight 0.1 --recut-rounds 2
 
 # --keep-seams: the distortion-only mode, no topology operation, no lambda, no bound.
 "$BIN" "$DATA/cat_f1500.obj" --keep-seams -o k.obj --report k.json >out.txt 2>err.txt
@@ -61,5 +65,15 @@ import json, sys
 a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 assert a["distortion_bound"] == 4.5 and a["bound_met"] is True and a["e_sd"] <= 4.5, a
 assert a["seam_length_normalized"] < b["seam_length_normalized"], (a["seam_length_normalized"], b["seam_length_normalized"])
+PY
+
+# --recut-rounds 0: the first result alone, whose seams the default rounds shorten on the cat.
+"$BIN" "$DATA/cat_f1500.obj" --recut-rounds 0 --quiet -o r0.obj --report r0.json || fail "--recut-rounds 0 failed"
+python3 - r0.json b41.json <<'PY' || fail "--recut-rounds 0 not as expected"
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert a["bound_met"] is True and a["e_sd"] <= 4.1, a
+assert a["iterations"] < b["iterations"], (a["iterations"], b["iterations"])
+assert a["seam_length_normalized"] > b["seam_length_normalized"], (a["seam_length_normalized"], b["seam_length_normalized"])
 PY
 echo "ok"
