@@ -53,7 +53,8 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
   settings.max_iterations =
     choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(100000));
-  const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds), 6);
+  const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds),
+                                    Alternating_settings().recut_rounds);
   if(rounds < 0)
   {
     message = "number_of_recut_rounds must be >= 0";

@@ -177,9 +177,7 @@ public:
       // configuration may still zip shut within the bound.
       if(status == OK && !m_settings.fixed_lambda && m_has_best && !m_best_polished)
       {
-        restore_best();
-        if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
-        status = polish_seams();
+        status = polish_best();
         if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
       }
       // (a round that finds nothing shorter ends them: the next would start
@@ -190,12 +188,7 @@ public:
         restore_best();
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
         status = recut(m_settings.recut_fraction);
-        if(status == OK && !m_best_polished)
-        {
-          restore_best();
-          if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
-          status = polish_seams();
-        }
+        if(status == OK && !m_best_polished) status = polish_best();
         // the iteration cap ends the rounds, not the converged run they improve
         if(status == WARNING_MAXIMUM_ITERATIONS) { status = OK; break; }
         if(status != OK && status != WARNING_CANCELLED) return status;
@@ -328,12 +321,7 @@ private:
         m_topology.merges(ops);
         m_topology.shifts(ops);
       }
-      const Operation* best = nullptr;
-      for(const Operation& op : ops)
-      {
-        if(std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) != failed.end()) continue;
-        if(!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) best = &op;
-      }
+      const Operation* best = cheapest_per_seam_length(ops, failed);
       if(!best) return OK;
       Uv_snapshot before;
       before.save(m_cm);
@@ -352,6 +340,28 @@ private:
     return OK;
   }
 
+  // The best feasible configuration, polished (its scaffold meshed anew).
+  Error_code polish_best()
+  {
+    restore_best();
+    if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
+    return polish_seams();
+  }
+
+  // Among the seam-shortening `ops`, the one that costs the least distortion
+  // per unit of seam length removed, but those (uv_a, uv_b) already `failed`.
+  static const Operation* cheapest_per_seam_length(const std::vector<Operation>& ops,
+                                                   const std::vector<std::pair<int, int> >& failed)
+  {
+    const Operation* best = nullptr;
+    for(const Operation& op : ops)
+    {
+      if(std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) != failed.end()) continue;
+      if(!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) best = &op;
+    }
+    return best;
+  }
+
   // A perturbation of the result (iterated local search): unzip the seams
   // where they buy least (merges by distortion per seam length) until they
   // are `fraction` shorter, and alternate from there (at the result's
@@ -368,11 +378,8 @@ private:
         Phase_timer timer(m_timings.topology);
         m_topology.merges(ops);
       }
-      const Operation* best = nullptr;
-      for(const Operation& op : ops)
-        if(op.d_se < 0 && (!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) &&
-           std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) == failed.end())
-          best = &op;
+      ops.erase(std::remove_if(ops.begin(), ops.end(), [](const Operation& op) { return !(op.d_se < 0); }), ops.end());
+      const Operation* best = cheapest_per_seam_length(ops, failed);
       if(!best) break;
       if(!apply(*best)) failed.emplace_back(best->uv_a, best->uv_b);
       if(m_cancelled) return WARNING_CANCELLED;
