@@ -188,9 +188,10 @@ void print_help(std::ostream& os)
      << default_max_iterations_seams << ", or " << default_max_iterations_keep
      << " with --keep-seams)\n"
      << "  --recut-rounds N        after the first result at the bound, at most N rounds of\n"
-     << "                          unzipping a tenth of the seams and cutting again, while\n"
-     << "                          that finds shorter seams; 0 for the first result alone\n"
-     << "                          (faster); not with --seam-weight or --keep-seams\n"
+     << "                          unzipping a tenth of the seams and cutting again (and N\n"
+     << "                          of straightening a winding seam path), while that finds\n"
+     << "                          shorter seams; 0 for the first result alone (faster);\n"
+     << "                          not with --seam-weight or --keep-seams\n"
      << "                          (default: " << default_recut_rounds << ")\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
      << "                          write the best result so far (status WARNING_CANCELLED,\n"

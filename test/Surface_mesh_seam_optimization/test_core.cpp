@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 
 
 #include <boost/property_map/property_map.hpp>
@@ -37,12 +38,13 @@ using SMSO::internal::Cut_mesh;
 
 namespace {
 
-// A planar n x n grid (z = 0) with jittered interior vertices.
-Surface_mesh planar_grid(int n, unsigned seed)
+// A planar n x n grid (z = 0) with jittered interior vertices; the
+// diagonal of square (i, j) joins (i, j) and (i+1, j+1).
+Surface_mesh planar_grid(int n, unsigned seed, double amplitude = 0.25)
 {
   Surface_mesh sm;
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+  std::uniform_real_distribution<double> jitter(-amplitude, amplitude);
   std::vector<Surface_mesh::Vertex_index> v;
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i)
@@ -387,4 +389,74 @@ BOOST_AUTO_TEST_CASE(invalid_input_gives_an_error_and_leaves_the_maps_untouched)
     BOOST_TEST(SMSO::minimize_distortion(sm, uv, SMSO_np::gradient_tolerance(-1.)).status == SMSO::ERROR_WRONG_PARAMETER);
     BOOST_TEST(all_sentinel(sm, uv));
   }
+}
+
+// A seam from the boundary vertex (0,4) of a unit grid to the interior tip
+// (5,4) that winds up through row 6: 2 diagonals and 5 unit edges, where
+// row 4 (5 unit edges) is free.
+BOOST_AUTO_TEST_CASE(seam_detours_finds_the_shortcut_of_a_winding_seam)
+{
+  const Surface_mesh sm = planar_grid(9, 1, 0.);
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  auto id = [&](int i, int j) {
+    for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
+      if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
+    return -1;
+  };
+  auto cut_along = [&](const std::vector<std::pair<int, int> >& path) {
+    std::vector<char> seam(cm.corner_vertex.size(), 0);
+    for(std::size_t k = 0; k + 1 < path.size(); ++k)
+    {
+      const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
+      for(std::size_t h = 0; h < seam.size(); ++h)
+      {
+        const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
+        if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
+      }
+    }
+    SMSO::internal::label_uv_vertices(cm, seam);
+  };
+  const auto length = [&](int h) { return cm.edge_length(h); };
+  const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
+  const auto target = [&](int h) { return cm.corner_vertex[h]; };
+
+  cut_along({ {0, 4}, {1, 5}, {2, 6}, {3, 6}, {4, 6}, {5, 6}, {5, 5}, {5, 4} });
+  {
+    const auto detours = SMSO::internal::seam_detours(cm, length, 1.1);
+    BOOST_REQUIRE(detours.size() == 1u);
+    const auto& d = detours.front();
+    BOOST_TEST(d.seam.size() == 7u);
+    BOOST_TEST(std::abs(d.seam_cost - (5 + 2 * std::sqrt(2.))) < 1e-12);
+    BOOST_TEST(d.shortcut.size() == 5u);
+    BOOST_TEST(std::abs(d.shortcut_cost - 5) < 1e-12);
+    BOOST_TEST(source(d.shortcut.front()) == id(0, 4));
+    BOOST_TEST(target(d.shortcut.back()) == id(5, 4));
+    BOOST_TEST(target(d.seam.back()) == id(5, 4));
+    double sum = 0;
+    for(std::size_t k = 0; k < d.shortcut.size(); ++k)
+    {
+      const int h = d.shortcut[k];
+      sum += cm.edge_length(h);
+      BOOST_TEST(!cm.is_seam(h));
+      if(k > 0) BOOST_TEST(source(h) == target(d.shortcut[k-1]));
+      BOOST_TEST(cm.points[3 * target(h) + 1] == 4.); // along row 4
+    }
+    BOOST_TEST(std::abs(sum - d.shortcut_cost) < 1e-12);
+  }
+  {
+    // from a plain seam vertex only: (1,5) saves its 5 + sqrt(2) - 5
+    const auto detours = SMSO::internal::seam_detours(cm, length, 1.1, true);
+    BOOST_REQUIRE(detours.size() == 1u);
+    BOOST_TEST(source(detours.front().seam.front()) == id(1, 5));
+    BOOST_TEST(std::abs(detours.front().seam_cost - (5 + std::sqrt(2.))) < 1e-12);
+    BOOST_TEST(std::abs(detours.front().shortcut_cost - 5) < 1e-12);
+  }
+  // (5 + 2 sqrt(2)) / 5 = 1.566: not a detour at the ratio 1.6
+  BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.6).empty());
+  // the straight seam is the shortest
+  cut_along({ {0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 4} });
+  BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.01).empty());
 }

@@ -488,3 +488,43 @@ BOOST_AUTO_TEST_CASE(moving_an_ear_across_a_seam_shortens_it_by_the_stencils_fig
   }
   BOOST_TEST(ears > 0u);
 }
+
+BOOST_AUTO_TEST_CASE(straightening_detours_shortens_the_seams_within_the_bound)
+{
+  // planck_s1 (775 faces, OptCuts data): its seams grown edge by edge wind;
+  // the rounds that replace a detour by its shortcut find shorter ones.
+  typedef SMSO::Symmetric_Dirichlet_energy Energy;
+  auto solve = [](double detour_ratio, double& e_sd, double& e_se, std::size_t& overlaps, std::string& invariants) {
+    Surface_mesh sm;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/planck_s1.obj", sm));
+    UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    SMSO::internal::Cut_mesh cm;
+    SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+    std::vector<double> weight;
+    SMSO::internal::Alternating_settings settings;
+    std::string message;
+    BOOST_REQUIRE(SMSO::internal::setup_seam_optimization(sm, uv, SMSO::parameters::default_values(), Energy(), cm,
+                                                          copy, weight, settings, message) == SMSO::OK);
+    settings.detour_ratio = detour_ratio;
+    SMSO::Default_seam_optimization_visitor visitor;
+    SMSO::internal::Alternating_optimization<Energy, SMSO::Eigen_simplicial_ldlt_traits,
+                                             SMSO::Default_seam_optimization_visitor>
+      optimizer(cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
+    BOOST_TEST(optimizer.run() == SMSO::OK);
+    e_sd = optimizer.distortion();
+    e_se = optimizer.seam_cost();
+    overlaps = SMSO::internal::count_overlapping_pairs(cm);
+    invariants = SMSO::internal::check_invariants(cm);
+  };
+  double sd_off, se_off, sd_on, se_on;
+  std::size_t ov_off, ov_on;
+  std::string inv_off, inv_on;
+  solve(std::numeric_limits<double>::infinity(), sd_off, se_off, ov_off, inv_off); // no path is a detour
+  solve(1.1, sd_on, se_on, ov_on, inv_on);
+  BOOST_TEST_MESSAGE("planck_s1: E_se " << se_off << " without straightening, " << se_on << " with");
+  BOOST_TEST(sd_off <= 4.1);
+  BOOST_TEST(sd_on <= 4.1);
+  BOOST_TEST(ov_on == 0u);
+  BOOST_TEST(inv_on.empty());
+  BOOST_TEST(se_on < 0.97 * se_off);
+}

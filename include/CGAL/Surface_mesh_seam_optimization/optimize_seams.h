@@ -82,8 +82,10 @@ namespace Surface_mesh_seam_optimization {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_recut_rounds}
 ///     \cgalParamDescription{bound mode: after the first result, rounds of unzipping a tenth of the seams where
-///       they buy least and cutting again from there; the shortest seams that meet the bound are kept, and the
-///       rounds end at the first that finds none shorter (more time for shorter seams; 0 turns them off).
+///       they buy least and cutting again from there, each after straightening rounds (a winding seam path
+///       replaced by its shortcut) while these find shorter seams; the shortest seams that meet the bound are
+///       kept, and the rounds end at the first unzipping round that finds none shorter (more time for shorter
+///       seams; 0 turns all of them off).
 ///       Reaching `maximum_number_of_iterations` during these rounds ends them with status `OK`}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd

@@ -60,7 +60,7 @@ CGAL_SMSO_NAMED_PARAMETER(maximum_number_of_iterations)
 CGAL_SMSO_NAMED_PARAMETER(edge_seam_weight_map)
 /// stop when the squared gradient norm falls below this (default 1e-12)
 CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
-/// rounds of unzipping part of the seams and cutting again after the first result (default 6; 0: none)
+/// rounds of unzipping part of the seams (and of straightening winding ones) and cutting again after the first result (default 6; 0: none)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
 #undef CGAL_SMSO_NAMED_PARAMETER
 

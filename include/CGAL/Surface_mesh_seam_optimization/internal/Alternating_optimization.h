@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 #include <CGAL/Real_timer.h>
@@ -55,6 +56,10 @@ struct Alternating_settings
   // shorter
   int recut_rounds = 6;
   double recut_fraction = 0.1;
+  // and straighten a leaf seam path whose shortcut is this much cheaper and
+  // saves at least this fraction of the seams
+  double detour_ratio = 1.1;
+  double detour_min_saving = 0.01;
   bool bijective = false;           // scaffold around the charts
   Newton_settings newton;
 };
@@ -180,19 +185,29 @@ public:
         status = polish_best();
         if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
       }
-      // (a round that finds nothing shorter ends them: the next would start
-      // from the same configuration and, deterministic, do about the same)
-      for(int r = 0; r < m_settings.recut_rounds && status == OK && !m_settings.fixed_lambda && m_has_best; ++r)
+      // Rounds from the best result: straighten its largest detour while
+      // that finds shorter seams, else unzip; they end at the first
+      // unzipping round that finds nothing shorter (the next would start
+      // from the same configuration and, deterministic, do about the same).
+      bool straighten_next = true;
+      for(int unzips = 0, straightens = 0;
+          unzips < m_settings.recut_rounds && status == OK && !m_settings.fixed_lambda && m_has_best; )
       {
         const double before = m_best_se;
         restore_best();
         if(!rebuild_scaffold()) return ERROR_LINEAR_SOLVER;
-        status = recut(m_settings.recut_fraction);
+        bool straightened = false;
+        if(straighten_next && straightens < m_settings.recut_rounds) status = straighten(straightened);
+        if(straightened) ++straightens;
+        else if(status == OK) { status = recut(m_settings.recut_fraction); ++unzips; }
         if(status == OK && !m_best_polished) status = polish_best();
         // the iteration cap ends the rounds, not the converged run they improve
         if(status == WARNING_MAXIMUM_ITERATIONS) { status = OK; break; }
         if(status != OK && status != WARNING_CANCELLED) return status;
-        if(!(m_best_se < before)) break;
+        const bool shorter = m_best_se < before;
+        if(shorter) m_straightened.clear();
+        if(!straightened && !shorter) break;
+        straighten_next = !straightened || shorter;
       }
       if(!m_settings.fixed_lambda)
       {
@@ -384,12 +399,165 @@ private:
       if(!apply(*best)) failed.emplace_back(best->uv_a, best->uv_b);
       if(m_cancelled) return WARNING_CANCELLED;
     }
+    return alternate_again();
+  }
+
+  // From a perturbed configuration, alternate again to the bound.
+  Error_code alternate_again()
+  {
     m_tips.clear();
     m_seen.clear();
     m_best_at = m_stationary_points; // patience starts anew
     Error_code status = descend();
     while(status == OK && step(status)) {}
     return status;
+  }
+
+  // A perturbation of the result: the largest detour of a leaf seam path
+  // not yet tried from this result is replaced by its shortcut (cut, then
+  // the detour zipped from its tip; or zipped first where the shortcut
+  // cannot be opened yet), and the alternation goes on from there.
+  // `applied` is false if there was no such detour or nothing could be done
+  // (nothing changed then).
+  Error_code straighten(bool& applied)
+  {
+    applied = false;
+    // (with a scaffold, a shortcut starts beside the junction: a junction's
+    // wedges are narrow, and splits there overlap)
+    const std::vector<Seam_detour> detours = seam_detours(
+      m_cm, [this](int h) { return m_topology.seam_cost(h); }, m_settings.detour_ratio, scaffold_on());
+    auto ends = [this](const Seam_detour& d) {
+      return std::make_pair(m_cm.corner_vertex[Cut_mesh::prev(d.seam.front())], m_cm.corner_vertex[d.seam.back()]);
+    };
+    const double min_saving = m_settings.detour_min_saving * seam_cost();
+    const Seam_detour* best = nullptr;
+    for(const Seam_detour& d : detours)
+    {
+      const double saving = d.seam_cost - d.shortcut_cost;
+      if(saving >= min_saving && (!best || saving > best->seam_cost - best->shortcut_cost) &&
+         std::find(m_straightened.begin(), m_straightened.end(), ends(d)) == m_straightened.end())
+        best = &d;
+    }
+    if(!best) return OK;
+    m_straightened.push_back(ends(*best));
+    const std::vector<int>& cut = best->shortcut;
+    std::size_t cuts = 0, zips = 0;
+    {
+      // one pattern analysis for the whole batch of operations
+      struct Defer { bool& flag; explicit Defer(bool& f) : flag(f) { flag = true; } ~Defer() { flag = false; } };
+      Defer defer(m_defer_pattern);
+      if(split_along(cut[0]))
+        // the shortcut but its last edge, whose end is still on the detour
+        for(cuts = 1; cuts + 1 < cut.size() && split_along(cut[cuts]); ++cuts) {}
+      const Error_code status = zip(best->seam, zips);
+      if(status != OK) return status;
+      for(; cuts < cut.size() && split_along(cut[cuts]); ++cuts) {}
+    }
+    if(m_cancelled) return WARNING_CANCELLED;
+    if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
+    if(cuts + zips == 0) return OK;
+    applied = true;
+    return alternate_again();
+  }
+
+  // Splits the source of halfedge h along it; false if that is not possible
+  // (the seam would reach another, or the result would overlap).
+  bool split_along(int h)
+  {
+    const int to = m_cm.corner_vertex[h];
+    std::vector<Operation> ops;
+    const Operation* split = nullptr;
+    for(int ring = scaffold_on() ? 1 : 0; ring >= 0 && !split; --ring)
+    {
+      // (the scaffold ring may leave no room to open it; apply() still checks the result)
+      Phase_timer timer(m_timings.topology);
+      if(ring == 0) m_topology.set_scaffold(nullptr);
+      m_topology.boundary_splits(Cut_mesh::prev(h), ops);
+      if(ring == 0 && scaffold_on()) m_topology.set_scaffold(&m_scaffold);
+      for(const Operation& op : ops) if(m_cm.corner_vertex[op.tips.front()] == to) split = &op;
+    }
+    if(!split) return false;
+    if(apply(*split)) return true;
+    if(!scaffold_on()) return false;
+    // Where the distortion would rather close the shortcut than open it,
+    // its sides cross in the stencil solve: open it a little instead (each
+    // copy towards its own faces), for the descent to settle with the scaffold.
+    Operation op = *split;
+    if(!open_slightly(op)) return false;
+    return apply(op);
+  }
+
+  // New positions of a split's two copies: a step from where the vertex is
+  // towards the centroid of each copy's faces, flipping none of them.
+  bool open_slightly(Operation& op) const
+  {
+    const Vertex_corners& vc = m_topology.vertex_corners();
+    const int v = m_cm.uv_vertex[op.uv_a];
+    const double* p = &m_cm.uv[2*op.uv_a];
+    double c[2][2] = { { 0, 0 }, { 0, 0 } };
+    int n[2] = { 0, 0 };
+    std::vector<std::pair<int, int> > faces; // (corner, copy)
+    for(int k = vc.offset[v]; k < vc.offset[v + 1]; ++k)
+    {
+      const int corner = vc.corners[k];
+      if(m_cm.corner_uv[corner] != op.uv_a) continue;
+      const int copy = std::find(op.corners.begin(), op.corners.end(), corner) != op.corners.end() ? 1 : 0;
+      faces.emplace_back(corner, copy);
+      for(int j : { Cut_mesh::next(corner), Cut_mesh::prev(corner) })
+        for(int d = 0; d < 2; ++d) c[copy][d] += m_cm.uv[2 * m_cm.corner_uv[j] + d] / 2;
+      ++n[copy];
+    }
+    if(n[0] == 0 || n[1] == 0) return false;
+    for(double eps = 0.1; eps > 1e-4; eps *= 0.5)
+    {
+      double q[2][2];
+      for(int copy = 0; copy < 2; ++copy)
+        for(int d = 0; d < 2; ++d) q[copy][d] = p[d] + eps * (c[copy][d] / n[copy] - p[d]);
+      bool flipped = false;
+      for(const std::pair<int, int>& fc : faces)
+      {
+        const double* b = &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::next(fc.first)]];
+        const double* e = &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::prev(fc.first)]];
+        const double* a = q[fc.second];
+        flipped = flipped || !((b[0]-a[0]) * (e[1]-a[1]) - (b[1]-a[1]) * (e[0]-a[0]) > 0);
+      }
+      if(flipped) continue;
+      op.new_u[0] = q[0][0]; op.new_u[1] = q[0][1];
+      op.new_u[2] = q[1][0]; op.new_u[3] = q[1][1];
+      return true;
+    }
+    return false;
+  }
+
+  // Zips the seam path (halfedges towards its tip) from the tip, with a
+  // descent where a merge cannot be placed; `zipped` merges done.
+  Error_code zip(const std::vector<int>& seam, std::size_t& zipped)
+  {
+    zipped = 0;
+    for(std::size_t i = seam.size(); i-- > 0; ++zipped)
+    {
+      Operation op;
+      bool merged = false;
+      for(int attempt = 0; attempt < 2 && !merged && !m_cancelled; ++attempt)
+      {
+        if(attempt == 1)
+        {
+          m_tips.clear();
+          if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
+          const Error_code status = descend();
+          if(status != OK) return status;
+        }
+        bool can = false;
+        {
+          Phase_timer timer(m_timings.topology);
+          can = m_topology.merge_at(seam[i], op);
+        }
+        merged = can && apply(op);
+      }
+      if(m_cancelled) return WARNING_CANCELLED;
+      if(!merged) break;
+    }
+    return OK;
   }
 
   // Applies op; with a scaffold, an op whose result would overlap is undone
@@ -407,14 +575,14 @@ private:
     {
       before.restore(m_cm);
       build_scaffold();
-      m_newton.rebuild_pattern();
+      if(!m_defer_pattern) m_newton.rebuild_pattern();
       ++m_rejected;
       return false;
     }
     ++m_operations;
     if(op.type != CORNER_MERGE)
       for(int t : op.tips) m_tips.push_back(t);
-    m_newton.rebuild_pattern();
+    if(!m_defer_pattern) m_newton.rebuild_pattern();
     if(!m_visitor.on_topology_operation(progress())) m_cancelled = true;
     return true;
   }
@@ -623,6 +791,8 @@ private:
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;
   bool m_lazy = false; // bijective, but no scaffold yet
+  bool m_defer_pattern = false; // a batch of operations: the Newton pattern is analysed after it
+  std::vector<std::pair<int, int> > m_straightened; // (start, tip) of the detours tried from the best
 
   double m_safe_lambda = 0;
   Uv_snapshot m_safe;
