@@ -515,12 +515,8 @@ private:
         for(int d = 0; d < 2; ++d) q[copy][d] = p[d] + eps * (c[copy][d] / n[copy] - p[d]);
       bool flipped = false;
       for(const std::pair<int, int>& fc : faces)
-      {
-        const double* b = &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::next(fc.first)]];
-        const double* e = &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::prev(fc.first)]];
-        const double* a = q[fc.second];
-        flipped = flipped || !((b[0]-a[0]) * (e[1]-a[1]) - (b[1]-a[1]) * (e[0]-a[0]) > 0);
-      }
+        flipped = flipped || !(signed_area2(q[fc.second], &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::next(fc.first)]],
+                                            &m_cm.uv[2 * m_cm.corner_uv[Cut_mesh::prev(fc.first)]]) > 0);
       if(flipped) continue;
       op.new_u[0] = q[0][0]; op.new_u[1] = q[0][1];
       op.new_u[2] = q[1][0]; op.new_u[3] = q[1][1];

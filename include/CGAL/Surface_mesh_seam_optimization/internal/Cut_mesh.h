@@ -17,6 +17,12 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+// Twice the signed area of the 2D triangle (a, b, c): > 0 if counterclockwise.
+inline double signed_area2(const double* a, const double* b, const double* c)
+{
+  return (b[0]-a[0]) * (c[1]-a[1]) - (b[1]-a[1]) * (c[0]-a[0]);
+}
+
 // Corner c = 3*f + i is corner i of face f. Halfedge c is the halfedge of
 // face f that ENDS at corner c (it starts at prev(c)), as CGAL's per-halfedge
 // UV convention: get(uvmap, h) is the UV of target(h) in face(h).
@@ -60,10 +66,7 @@ struct Cut_mesh
   // Twice the signed UV area of face f.
   double signed_uv_area2(std::size_t f) const
   {
-    const double* a = &uv[2 * corner_uv[3*f]];
-    const double* b = &uv[2 * corner_uv[3*f+1]];
-    const double* c = &uv[2 * corner_uv[3*f+2]];
-    return (b[0]-a[0]) * (c[1]-a[1]) - (b[1]-a[1]) * (c[0]-a[0]);
+    return signed_area2(&uv[2 * corner_uv[3*f]], &uv[2 * corner_uv[3*f+1]], &uv[2 * corner_uv[3*f+2]]);
   }
 
   // Fills face_area / rest_inverse / total_area from the 3D points.

@@ -3,9 +3,10 @@
 //
 // Seams as a graph on the 3D mesh: the leaf paths (from a seam tip to the
 // first junction or input boundary vertex) and, for each, the cheapest path
-// between the same two ends through uncut vertices. Local operations grow
-// seams one edge at a time along the distortion's pull, so a seam may wind
-// far from the shortest route between its ends; these are the detours.
+// through uncut vertices from one of its vertices to its tip. Local
+// operations grow seams one edge at a time along the distortion's pull, so a
+// seam may wind far from the shortest route between its ends; these are the
+// detours.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
