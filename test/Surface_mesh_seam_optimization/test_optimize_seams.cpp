@@ -379,6 +379,33 @@ BOOST_AUTO_TEST_CASE(the_scaffold_waits_until_charts_overlap)
   check_valid(bijective_run);
 }
 
+BOOST_AUTO_TEST_CASE(a_disk_starts_over_with_its_scaffold_at_the_first_overlap)
+{
+  // planck_s1 is a disk whose free run overlaps: the bijective run goes back
+  // to the initial map (no seam) once, and on with the scaffold from there.
+  struct Seam_visitor : SMSO::Default_seam_optimization_visitor
+  {
+    std::size_t restarts = 0;
+    double last = 0;
+    bool on_iteration(const SMSO::Seam_optimization_progress& p)
+    {
+      if(last > 0 && p.seam_length_normalized == 0) ++restarts;
+      last = p.seam_length_normalized;
+      return true;
+    }
+  } free_visitor, bijective_visitor;
+  Run free_run, bijective_run;
+  run("planck_s1.obj", free_run, SMSO_np::combine(SMSO_np::bijective(false), CGAL::parameters::visitor(std::ref(free_visitor))),
+      SMSO_TEST_DATA_DIR);
+  run("planck_s1.obj", bijective_run, CGAL::parameters::visitor(std::ref(bijective_visitor)), SMSO_TEST_DATA_DIR);
+  BOOST_TEST(free_run.result.overlapping_triangle_pairs > 0u);
+  BOOST_TEST(free_visitor.restarts == 0u);
+  BOOST_TEST(bijective_visitor.restarts == 1u);
+  BOOST_TEST(bijective_run.result.scaffold_rebuilds > 0u);
+  BOOST_TEST(bijective_run.result.distortion <= 4.1);
+  check_valid(bijective_run);
+}
+
 BOOST_AUTO_TEST_CASE(is_bijective_on_hand_made_maps)
 {
   // Two triangles sharing an edge; the second folded back over the first

@@ -98,12 +98,18 @@ public:
   {
     if(m_settings.bijective)
     {
-      // the scaffold waits until it is needed (see check_overlaps()); meshing
-      // it once checks that the initial map is bijective
+      // The scaffold waits until it is needed (see check_overlaps());
+      // meshing it once checks that the initial map is bijective.
       m_lazy = true;
       if(!build_scaffold()) return ERROR_OVERLAPPING_UV_MAP;
       m_scaffold.clear();
       keep_as_safe();
+      // (the input's own disks: see check_overlaps())
+      if(m_cm.seam_length() == 0)
+      {
+        m_initial.save(m_cm);
+        m_restart_at_overlap = true;
+      }
     }
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     return descend();
@@ -239,8 +245,21 @@ private:
   {
     if(!m_lazy) return true;
     if(count_overlapping_pairs(m_cm, 1) == 0) { keep_as_safe(); return true; }
-    restore_safe();
-    m_lambda = m_safe_lambda;
+    if(m_restart_at_overlap)
+    {
+      // The input's own disks keep about their initial layout; charts that
+      // were cut free settle where the scaffold later cramps them: start
+      // over, with the scaffold (as the reference does for disks).
+      m_initial.restore(m_cm);
+      m_lambda = m_settings.lambda;
+      m_best_at = m_stationary_points; // the second start has its patience
+      m_restart_at_overlap = false;
+    }
+    else
+    {
+      restore_safe();
+      m_lambda = m_safe_lambda;
+    }
     m_tips.clear();
     m_seen.clear();
     m_lazy = false;
@@ -792,6 +811,8 @@ private:
 
   double m_safe_lambda = 0;
   Uv_snapshot m_safe;
+  Uv_snapshot m_initial; // restart_at_overlap
+  bool m_restart_at_overlap = false; // (initial map without seams)
   bool m_has_best = false;
   bool m_best_polished = false;
   double m_best_se = 0, m_best_lambda = 0;
