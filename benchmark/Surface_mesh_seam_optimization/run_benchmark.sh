@@ -89,6 +89,7 @@ reference=$data_dir/reference_optcuts.csv
 uvmetrics=$data_dir/../tools/uvmetrics.py
 [ -f "$uvmetrics" ] || uvmetrics=$repo/../shared/tools/uvmetrics.py
 [ -n "$out_prefix" ] || out_prefix=$repo/benchmark/results_$mode
+mkdir -p "$(dirname "$out_prefix")"
 
 # --- build (configure once; make is a no-op when up to date)
 if [ ! -f "$build_dir/CMakeCache.txt" ]; then
