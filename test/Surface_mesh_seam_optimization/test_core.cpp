@@ -16,7 +16,9 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
 
 
 #include <boost/property_map/property_map.hpp>
@@ -459,4 +461,87 @@ BOOST_AUTO_TEST_CASE(seam_detours_finds_the_shortcut_of_a_winding_seam)
   // the straight seam is the shortest
   cut_along({ {0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 4} });
   BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.01).empty());
+}
+
+BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
+{
+  // A seam across the grid from border to border, with a bump between (1,4)
+  // and (6,4): no tip to zip it from. The two charts are laid out apart
+  // (the top one 0.5 higher), both isometric.
+  const Surface_mesh sm = planar_grid(9, 1, 0.);
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  auto id = [&](int i, int j) {
+    for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
+      if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
+    return -1;
+  };
+  const std::vector<std::pair<int, int> > path = { {0, 4}, {1, 4}, {2, 5}, {3, 6}, {4, 6}, {5, 6}, {6, 6},
+                                                   {6, 5}, {6, 4}, {7, 4}, {8, 4}, {9, 4} };
+  std::vector<char> seam(cm.corner_vertex.size(), 0);
+  for(std::size_t k = 0; k + 1 < path.size(); ++k)
+  {
+    const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
+    for(std::size_t h = 0; h < seam.size(); ++h)
+    {
+      const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
+      if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
+    }
+  }
+  SMSO::internal::label_uv_vertices(cm, seam);
+  std::vector<int> chart;
+  BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
+  const int top = chart[0] == 0 ? 1 : 0; // face 0 is at the bottom left
+  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+  {
+    const double* p = &cm.points[3 * cm.corner_vertex[c]];
+    cm.uv[2 * cm.corner_uv[c]] = p[0];
+    cm.uv[2 * cm.corner_uv[c] + 1] = p[1] + (chart[c / 3] == top ? 0.5 : 0.);
+  }
+  const auto length = [&](int h) { return cm.edge_length(h); };
+  const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
+  const auto target = [&](int h) { return cm.corner_vertex[h]; };
+  BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.1).empty()); // no tip
+
+  const auto reroutes = SMSO::internal::seam_reroutes(cm, length, 1.1);
+  BOOST_REQUIRE(reroutes.size() == 1u);
+  const auto& d = reroutes.front();
+  BOOST_TEST(d.reroute);
+  BOOST_TEST(std::abs(d.seam_cost - (5 + 2 * std::sqrt(2.))) < 1e-12);
+  BOOST_TEST(std::abs(d.shortcut_cost - 5) < 1e-12);
+  // between (1,4) and (6,4), in either direction, both paths the same way
+  BOOST_TEST(std::min(source(d.seam.front()), target(d.seam.back())) == std::min(id(1, 4), id(6, 4)));
+  BOOST_TEST(std::max(source(d.seam.front()), target(d.seam.back())) == std::max(id(1, 4), id(6, 4)));
+  BOOST_TEST(source(d.shortcut.front()) == source(d.seam.front()));
+  BOOST_TEST(target(d.shortcut.back()) == target(d.seam.back()));
+  for(int h : d.shortcut) BOOST_TEST(cm.points[3 * target(h) + 1] == 4.); // along row 4
+  // (1 + 2 sqrt(2) / 5) = 1.566: not at the ratio 1.6
+  BOOST_TEST(SMSO::internal::seam_reroutes(cm, length, 1.6).empty());
+
+  BOOST_REQUIRE(SMSO::internal::reroute_seam(cm, SMSO::internal::Vertex_corners(cm), d));
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+  // the seam is row 4, the region above it changed charts
+  BOOST_TEST(std::abs(cm.seam_length() - 9) < 1e-12);
+  for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+  {
+    if(cm.opposite[h] < 0) continue;
+    const bool on_row_4 = cm.points[3 * source(int(h)) + 1] == 4 && cm.points[3 * target(int(h)) + 1] == 4;
+    BOOST_TEST(cm.is_seam(int(h)) == on_row_4);
+  }
+  BOOST_TEST(cm.compute_charts(chart) == 2u);
+  // the region moved rigidly (a translation by 0.5 here) and nothing else did
+  double worst = 0;
+  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+  {
+    const int f = int(c / 3);
+    const double y = (cm.points[3 * cm.corner_vertex[3*f] + 1] +
+                      cm.points[3 * cm.corner_vertex[3*f + 1] + 1] + cm.points[3 * cm.corner_vertex[3*f + 2] + 1]) / 3;
+    const double* p = &cm.points[3 * cm.corner_vertex[c]];
+    worst = (std::max)(worst, std::abs(cm.uv[2 * cm.corner_uv[c]] - p[0]));
+    worst = (std::max)(worst, std::abs(cm.uv[2 * cm.corner_uv[c] + 1] - (p[1] + (y > 4 ? 0.5 : 0.))));
+  }
+  BOOST_TEST(worst < 1e-9);
+  BOOST_TEST(SMSO::internal::seam_reroutes(cm, length, 1.01).empty());
 }

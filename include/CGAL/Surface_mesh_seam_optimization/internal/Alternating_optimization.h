@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 #include <CGAL/Real_timer.h>
@@ -443,8 +444,11 @@ private:
     applied = false;
     // (with a scaffold, a shortcut starts beside the junction: a junction's
     // wedges are narrow, and splits there overlap)
-    const std::vector<Seam_detour> detours = seam_detours(
+    std::vector<Seam_detour> detours = seam_detours(
       m_cm, [this](int h) { return m_topology.seam_cost(h); }, m_settings.detour_ratio, scaffold_on());
+    // and parts of junction-to-junction paths, which have no tip to zip from
+    for(Seam_detour& d : seam_reroutes(m_cm, [this](int h) { return m_topology.seam_cost(h); }, m_settings.detour_ratio))
+      detours.push_back(std::move(d));
     auto ends = [this](const Seam_detour& d) {
       return std::make_pair(m_cm.corner_vertex[Cut_mesh::prev(d.seam.front())], m_cm.corner_vertex[d.seam.back()]);
     };
@@ -459,6 +463,7 @@ private:
     }
     if(!best) return OK;
     m_straightened.push_back(ends(*best));
+    if(best->reroute) return reroute(*best, applied);
     const std::vector<int>& cut = best->shortcut;
     std::size_t cuts = 0, zips = 0;
     {
@@ -476,6 +481,33 @@ private:
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     if(cuts + zips == 0) return OK;
     applied = true;
+    return alternate_again();
+  }
+
+  // Replaces a seam part without tips by its shortcut (reroute_seam()), if
+  // the result does not overlap, and alternates again from there.
+  Error_code reroute(const Seam_detour& d, bool& applied)
+  {
+    Uv_snapshot before;
+    before.save(m_cm);
+    bool done = false;
+    {
+      Phase_timer timer(m_timings.topology);
+      done = reroute_seam(m_cm, m_topology.vertex_corners(), d);
+    }
+    if(!done) return OK;
+    // (the region moved across the seam may land on another part of the chart)
+    if((m_settings.bijective && count_overlapping_pairs(m_cm, 1) > 0) || (scaffold_on() && !build_scaffold()))
+    {
+      before.restore(m_cm);
+      if(scaffold_on()) build_scaffold();
+      return m_newton.rebuild_pattern() ? OK : ERROR_LINEAR_SOLVER;
+    }
+    CGAL_assertion_msg(check_invariants(m_cm).empty(), check_invariants(m_cm).c_str());
+    ++m_operations;
+    if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
+    applied = true;
+    if(!m_visitor.on_topology_operation(progress())) { m_cancelled = true; return WARNING_CANCELLED; }
     return alternate_again();
   }
 

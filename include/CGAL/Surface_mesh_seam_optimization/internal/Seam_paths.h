@@ -13,6 +13,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 
+
 #include <algorithm>
 #include <functional>
 #include <limits>
@@ -29,6 +30,7 @@ struct Seam_detour
   // halfedges along the two paths, both from the same seam vertex to the tip
   std::vector<int> seam, shortcut;
   double seam_cost = 0, shortcut_cost = 0;
+  bool reroute = false; // no tip: both paths from the part's first vertex to its last
 };
 
 // For each leaf seam path, the part from one of its vertices to its tip
@@ -132,6 +134,120 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
     touched.clear();
   }
   return detours;
+}
+
+// For each seam path between two junctions (or input boundary vertices),
+// the part between two of its inner vertices whose cheapest alternative
+// (through vertices on no seam and not on the input boundary) saves most, if
+// that is at least `min_ratio` times cheaper. Such a part has no tip to be
+// zipped from: `seam` and `shortcut` both go from its first vertex to its
+// last.
+template <typename Cost>
+std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, double min_ratio)
+{
+  const int nv = int(cm.number_of_vertices());
+  const int nh = int(cm.corner_vertex.size());
+  auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
+  auto target = [&](int h) { return cm.corner_vertex[h]; };
+  std::vector<int> offset(nv + 1, 0), out(nh);
+  std::vector<int> seam_degree(nv, 0);
+  std::vector<char> on_border(nv, 0);
+  for(int h = 0; h < nh; ++h)
+  {
+    if(cm.opposite[h] < 0) { on_border[source(h)] = on_border[target(h)] = 1; continue; }
+    ++offset[source(h) + 1];
+    if(cm.is_seam(h)) ++seam_degree[source(h)];
+  }
+  for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
+  {
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for(int h = 0; h < nh; ++h)
+      if(cm.opposite[h] >= 0) out[fill[source(h)]++] = h;
+  }
+  auto plain = [&](int v) { return seam_degree[v] == 2 && !on_border[v]; };
+
+  std::vector<Seam_detour> reroutes;
+  std::vector<char> walked(nh, 0);
+  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
+  std::vector<int> reached_by(nv, -1), touched;
+  for(int h0 = 0; h0 < nh; ++h0)
+  {
+    if(cm.opposite[h0] < 0 || !cm.is_seam(h0) || walked[h0] || plain(source(h0))) continue;
+    // the path from a node along h0 to the next node
+    std::vector<int> path{ h0 };
+    walked[h0] = walked[cm.opposite[h0]] = 1;
+    for(std::size_t guard = 0; plain(target(path.back())) && guard < std::size_t(nh); ++guard)
+    {
+      const int v = target(path.back()), from = source(path.back());
+      int next = -1;
+      for(int k = offset[v]; k < offset[v + 1]; ++k)
+        if(cm.is_seam(out[k]) && target(out[k]) != from) { next = out[k]; break; }
+      if(next < 0 || walked[next]) break;
+      path.push_back(next);
+      walked[next] = walked[cm.opposite[next]] = 1;
+    }
+    const int end = target(path.back());
+    if(plain(end) || (seam_degree[end] == 1 && !on_border[end]) ||
+       (seam_degree[source(h0)] == 1 && !on_border[source(h0)]) || path.size() < 3)
+      continue; // a leaf path (seam_detours()), or a loop
+    // length[i]: seam cost from the start to vertex i (target of path[i-1])
+    std::vector<double> length(path.size() + 1, 0.);
+    for(std::size_t i = 0; i < path.size(); ++i) length[i + 1] = length[i] + cost(path[i]);
+    double saving = 0;
+    std::size_t best_i = 0, best_j = 0;
+    std::vector<int> best_shortcut;
+    for(std::size_t i = 1; i + 2 < path.size(); ++i)
+    {
+      const int start = target(path[i - 1]);
+      const double bound = length[path.size() - 1] - length[i];
+      typedef std::pair<double, int> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+      dist[start] = 0; touched.push_back(start);
+      queue.emplace(0., start);
+      while(!queue.empty())
+      {
+        const Item item = queue.top(); queue.pop();
+        const int u = item.first > dist[item.second] ? -1 : item.second;
+        if(u < 0 || (u != start && (seam_degree[u] != 0 || on_border[u]))) continue;
+        for(int k = offset[u]; k < offset[u + 1]; ++k)
+        {
+          const int h = out[k], w = target(h);
+          const double dw = item.first + cost(h);
+          if(dw >= dist[w] || dw > bound || cm.is_seam(h)) continue;
+          if(dist[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
+          dist[w] = dw;
+          reached_by[w] = h;
+          queue.emplace(dw, w);
+        }
+      }
+      for(std::size_t j = i + 2; j < path.size(); ++j)
+      {
+        const int w = target(path[j - 1]);
+        const double along = length[j] - length[i];
+        if(dist[w] * min_ratio <= along && along - dist[w] > saving)
+        {
+          saving = along - dist[w];
+          best_i = i; best_j = j;
+          best_shortcut.clear();
+          for(int x = w; x != start; x = source(reached_by[x])) best_shortcut.push_back(reached_by[x]);
+          std::reverse(best_shortcut.begin(), best_shortcut.end());
+        }
+      }
+      for(int w : touched) { dist[w] = std::numeric_limits<double>::infinity(); reached_by[w] = -1; }
+      touched.clear();
+    }
+    if(saving > 0)
+    {
+      Seam_detour d;
+      d.seam.assign(path.begin() + best_i, path.begin() + best_j);
+      d.seam_cost = length[best_j] - length[best_i];
+      d.shortcut = best_shortcut;
+      d.shortcut_cost = d.seam_cost - saving;
+      d.reroute = true;
+      reroutes.push_back(std::move(d));
+    }
+  }
+  return reroutes;
 }
 
 } // namespace internal
