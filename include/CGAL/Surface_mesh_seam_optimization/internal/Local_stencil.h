@@ -16,7 +16,11 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -82,7 +86,11 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
   auto objective = [&](const double* x) { return stencil_energy(cm, energy, s, x) + stencil_scaffold_energy(s, x); };
   double e = objective(s.pos.data());
   if(n == 0 || !(e < std::numeric_limits<double>::infinity())) return stencil_energy(cm, energy, s, s.pos.data());
-  Eigen::MatrixXd H(n, n);
+  // (a large stencil, a region moved by reroute_seam(), is sparse)
+  const bool sparse = n > 256;
+  Eigen::MatrixXd H(sparse ? 0 : n, sparse ? 0 : n);
+  std::vector<Eigen::Triplet<double> > triplets;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > sparse_solver;
   Eigen::VectorXd g(n), p(n);
   std::vector<double> trial(s.pos.size()), dir(s.pos.size(), 0.);
   Eigen::Matrix2d J, dJ;
@@ -91,7 +99,9 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
   double ge[6];
   for(int it = 0; it < iterations; ++it)
   {
-    H.setZero(); g.setZero();
+    if(!sparse) H.setZero();
+    triplets.clear();
+    g.setZero();
     const std::size_t n_faces = s.faces.size();
     for(std::size_t i = 0; i < n_faces + s.extra_weight.size(); ++i)
     {
@@ -113,12 +123,29 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
           g[2*l[x] + r] += ge[2*x + r];
           for(int y = 0; y < 3; ++y)
             if(l[y] < s.n_free)
-              for(int q = 0; q < 2; ++q) H(2*l[x] + r, 2*l[y] + q) += He(2*x + r, 2*y + q);
+              for(int q = 0; q < 2; ++q)
+              {
+                if(sparse) triplets.emplace_back(2*l[x] + r, 2*l[y] + q, He(2*x + r, 2*y + q));
+                else H(2*l[x] + r, 2*l[y] + q) += He(2*x + r, 2*y + q);
+              }
         }
       }
     }
-    H.diagonal().array() += 1e-12 * (1. + H.diagonal().cwiseAbs().maxCoeff());
-    p = H.ldlt().solve(-g);
+    if(sparse)
+    {
+      Eigen::SparseMatrix<double> Hs(n, n);
+      Hs.setFromTriplets(triplets.begin(), triplets.end());
+      double max_diagonal = 0;
+      for(int i = 0; i < n; ++i) max_diagonal = (std::max)(max_diagonal, std::abs(Hs.coeff(i, i)));
+      for(int i = 0; i < n; ++i) Hs.coeffRef(i, i) += 1e-12 * (1. + max_diagonal);
+      sparse_solver.compute(Hs);
+      p = sparse_solver.info() == Eigen::Success ? Eigen::VectorXd(sparse_solver.solve(-g)) : Eigen::VectorXd(-g);
+    }
+    else
+    {
+      H.diagonal().array() += 1e-12 * (1. + H.diagonal().cwiseAbs().maxCoeff());
+      p = H.ldlt().solve(-g);
+    }
     double slope = g.dot(p);
     if(!(slope < 0)) { p = -g; slope = -g.squaredNorm(); }
     if(-slope < 1e-20) break;
