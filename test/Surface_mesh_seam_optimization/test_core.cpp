@@ -64,6 +64,40 @@ Surface_mesh planar_grid(int n, unsigned seed, double amplitude = 0.25)
   return sm;
 }
 
+// The cut mesh of the flat 9 x 9 unit grid, cut along paths of grid points.
+struct Grid_cut
+{
+  SMSO::internal::Cut_mesh cm;
+
+  Grid_cut()
+  {
+    const Surface_mesh sm = planar_grid(9, 1, 0.);
+    SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+    std::string msg;
+    BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  }
+  int id(int i, int j) const
+  {
+    for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
+      if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
+    return -1;
+  }
+  void cut_along(const std::vector<std::pair<int, int> >& path)
+  {
+    std::vector<char> seam(cm.corner_vertex.size(), 0);
+    for(std::size_t k = 0; k + 1 < path.size(); ++k)
+    {
+      const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
+      for(std::size_t h = 0; h < seam.size(); ++h)
+      {
+        const int s = cm.corner_vertex[SMSO::internal::Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
+        if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
+      }
+    }
+    SMSO::internal::label_uv_vertices(cm, seam);
+  }
+};
+
 template <typename Mesh>
 Mesh read_mesh(const std::string& name)
 {
@@ -398,34 +432,14 @@ BOOST_AUTO_TEST_CASE(invalid_input_gives_an_error_and_leaves_the_maps_untouched)
 // row 4 (5 unit edges) is free.
 BOOST_AUTO_TEST_CASE(seam_detours_finds_the_shortcut_of_a_winding_seam)
 {
-  const Surface_mesh sm = planar_grid(9, 1, 0.);
-  SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
-  auto id = [&](int i, int j) {
-    for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
-      if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
-    return -1;
-  };
-  auto cut_along = [&](const std::vector<std::pair<int, int> >& path) {
-    std::vector<char> seam(cm.corner_vertex.size(), 0);
-    for(std::size_t k = 0; k + 1 < path.size(); ++k)
-    {
-      const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
-      for(std::size_t h = 0; h < seam.size(); ++h)
-      {
-        const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
-        if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
-      }
-    }
-    SMSO::internal::label_uv_vertices(cm, seam);
-  };
+  Grid_cut grid;
+  const SMSO::internal::Cut_mesh& cm = grid.cm;
+  auto id = [&](int i, int j) { return grid.id(i, j); };
   const auto length = [&](int h) { return cm.edge_length(h); };
   const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
   const auto target = [&](int h) { return cm.corner_vertex[h]; };
 
-  cut_along({ {0, 4}, {1, 5}, {2, 6}, {3, 6}, {4, 6}, {5, 6}, {5, 5}, {5, 4} });
+  grid.cut_along({ {0, 4}, {1, 5}, {2, 6}, {3, 6}, {4, 6}, {5, 6}, {5, 5}, {5, 4} });
   {
     const auto detours = SMSO::internal::seam_detours(cm, length, 1.1);
     BOOST_REQUIRE(detours.size() == 1u);
@@ -459,7 +473,7 @@ BOOST_AUTO_TEST_CASE(seam_detours_finds_the_shortcut_of_a_winding_seam)
   // (5 + 2 sqrt(2)) / 5 = 1.566: not a detour at the ratio 1.6
   BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.6).empty());
   // the straight seam is the shortest
-  cut_along({ {0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 4} });
+  grid.cut_along({ {0, 4}, {1, 4}, {2, 4}, {3, 4}, {4, 4}, {5, 4} });
   BOOST_TEST(SMSO::internal::seam_detours(cm, length, 1.01).empty());
 }
 
@@ -468,29 +482,10 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   // A seam across the grid from border to border, with a bump between (1,4)
   // and (6,4): no tip to zip it from. The two charts are laid out apart
   // (the top one 0.5 higher), both isometric.
-  const Surface_mesh sm = planar_grid(9, 1, 0.);
-  SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
-  auto id = [&](int i, int j) {
-    for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
-      if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
-    return -1;
-  };
-  const std::vector<std::pair<int, int> > path = { {0, 4}, {1, 4}, {2, 5}, {3, 6}, {4, 6}, {5, 6}, {6, 6},
-                                                   {6, 5}, {6, 4}, {7, 4}, {8, 4}, {9, 4} };
-  std::vector<char> seam(cm.corner_vertex.size(), 0);
-  for(std::size_t k = 0; k + 1 < path.size(); ++k)
-  {
-    const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
-    for(std::size_t h = 0; h < seam.size(); ++h)
-    {
-      const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
-      if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
-    }
-  }
-  SMSO::internal::label_uv_vertices(cm, seam);
+  Grid_cut grid;
+  SMSO::internal::Cut_mesh& cm = grid.cm;
+  auto id = [&](int i, int j) { return grid.id(i, j); };
+  grid.cut_along({ {0, 4}, {1, 4}, {2, 5}, {3, 6}, {4, 6}, {5, 6}, {6, 6}, {6, 5}, {6, 4}, {7, 4}, {8, 4}, {9, 4} });
   std::vector<int> chart;
   BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
   const int top = chart[0] == 0 ? 1 : 0; // face 0 is at the bottom left
@@ -520,7 +515,8 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   // (1 + 2 sqrt(2) / 5) = 1.566: not at the ratio 1.6
   BOOST_TEST(SMSO::internal::seam_reroutes(cm, length, 1.6).empty());
 
-  BOOST_REQUIRE(SMSO::internal::reroute_seam(cm, SMSO::internal::Vertex_corners(cm), d));
+  SMSO::internal::Uv_snapshot before;
+  BOOST_REQUIRE(SMSO::internal::reroute_seam(cm, SMSO::internal::Vertex_corners(cm), d, before));
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
   // the seam is row 4, the region above it changed charts
   BOOST_TEST(std::abs(cm.seam_length() - 9) < 1e-12);
@@ -544,4 +540,8 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   }
   BOOST_TEST(worst < 1e-9);
   BOOST_TEST(SMSO::internal::seam_reroutes(cm, length, 1.01).empty());
+  // what the caller restores when it rejects the result (an overlap)
+  before.restore(cm);
+  BOOST_TEST(std::abs(cm.seam_length() - (9 + 2 * std::sqrt(2.))) < 1e-12);
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
 }

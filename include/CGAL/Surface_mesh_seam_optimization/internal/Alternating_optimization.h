@@ -489,11 +489,10 @@ private:
   Error_code reroute(const Seam_detour& d, bool& applied)
   {
     Uv_snapshot before;
-    before.save(m_cm);
     bool done = false;
     {
       Phase_timer timer(m_timings.topology);
-      done = reroute_seam(m_cm, m_topology.vertex_corners(), d);
+      done = reroute_seam(m_cm, m_topology.vertex_corners(), d, before);
     }
     if(!done) return OK;
     // (the region moved across the seam may land on another part of the chart)

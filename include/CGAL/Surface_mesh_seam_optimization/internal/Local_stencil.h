@@ -19,8 +19,6 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -135,9 +133,8 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
     {
       Eigen::SparseMatrix<double> Hs(n, n);
       Hs.setFromTriplets(triplets.begin(), triplets.end());
-      double max_diagonal = 0;
-      for(int i = 0; i < n; ++i) max_diagonal = (std::max)(max_diagonal, std::abs(Hs.coeff(i, i)));
-      for(int i = 0; i < n; ++i) Hs.coeffRef(i, i) += 1e-12 * (1. + max_diagonal);
+      const double shift = 1e-12 * (1. + Hs.diagonal().cwiseAbs().maxCoeff());
+      for(int i = 0; i < n; ++i) Hs.coeffRef(i, i) += shift;
       sparse_solver.compute(Hs);
       p = sparse_solver.info() == Eigen::Success ? Eigen::VectorXd(sparse_solver.solve(-g)) : Eigen::VectorXd(-g);
     }

@@ -3,16 +3,16 @@
 //
 // Seams as a graph on the 3D mesh: the leaf paths (from a seam tip to the
 // first junction or input boundary vertex) and, for each, the cheapest path
-// through uncut vertices from one of its vertices to its tip. Local
-// operations grow seams one edge at a time along the distortion's pull, so a
-// seam may wind far from the shortest route between its ends; these are the
-// detours.
+// through uncut vertices from one of its vertices to its tip; the paths
+// between two junctions and, for each, the cheapest such path between two
+// of its vertices. Local operations grow seams one edge at a time along the
+// distortion's pull, so a seam may wind far from the shortest route between
+// its ends; these are the detours.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
-
 
 #include <algorithm>
 #include <functional>
@@ -33,6 +33,81 @@ struct Seam_detour
   bool reroute = false; // no tip: both paths from the part's first vertex to its last
 };
 
+// The interior edges around each vertex and how many of them are seams.
+struct Seam_graph
+{
+  const Cut_mesh& cm;
+  std::vector<int> offset, out;  // outgoing interior halfedges of each vertex
+  std::vector<int> seam_degree;
+  std::vector<char> on_border;   // on the input boundary
+
+  explicit Seam_graph(const Cut_mesh& mesh)
+    : cm(mesh), offset(mesh.number_of_vertices() + 1, 0), out(mesh.corner_vertex.size()),
+      seam_degree(mesh.number_of_vertices(), 0), on_border(mesh.number_of_vertices(), 0)
+  {
+    const int nv = int(cm.number_of_vertices()), nh = int(cm.corner_vertex.size());
+    for(int h = 0; h < nh; ++h)
+    {
+      if(cm.opposite[h] < 0) { on_border[source(h)] = on_border[target(h)] = 1; continue; }
+      ++offset[source(h) + 1];
+      if(cm.is_seam(h)) ++seam_degree[source(h)];
+    }
+    for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for(int h = 0; h < nh; ++h)
+      if(cm.opposite[h] >= 0) out[fill[source(h)]++] = h;
+  }
+
+  int source(int h) const { return cm.corner_vertex[Cut_mesh::prev(h)]; }
+  int target(int h) const { return cm.corner_vertex[h]; }
+  // the seam halfedge out of v that does not lead back to `from`, or -1
+  int next_seam(int v, int from) const
+  {
+    for(int k = offset[v]; k < offset[v + 1]; ++k)
+      if(cm.is_seam(out[k]) && target(out[k]) != from) return out[k];
+    return -1;
+  }
+};
+
+// Cheapest paths from one vertex through uncut vertices (on no seam and not
+// on the input boundary; a seam or boundary vertex ends a path), no longer
+// than a bound: the candidate shortcuts. Reset by each run.
+struct Uncut_paths
+{
+  std::vector<double> dist;
+  std::vector<int> reached_by; // last halfedge of the cheapest path
+  std::vector<int> touched;
+
+  explicit Uncut_paths(std::size_t nv) : dist(nv, std::numeric_limits<double>::infinity()), reached_by(nv, -1) {}
+
+  template <typename Cost>
+  void run(const Seam_graph& g, const Cost& cost, int start, double bound)
+  {
+    for(int w : touched) { dist[w] = std::numeric_limits<double>::infinity(); reached_by[w] = -1; }
+    touched.clear();
+    typedef std::pair<double, int> Item;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+    dist[start] = 0; touched.push_back(start);
+    queue.emplace(0., start);
+    while(!queue.empty())
+    {
+      const Item item = queue.top(); queue.pop();
+      const int u = item.first > dist[item.second] ? -1 : item.second;
+      if(u < 0 || (u != start && (g.seam_degree[u] != 0 || g.on_border[u]))) continue;
+      for(int k = g.offset[u]; k < g.offset[u + 1]; ++k)
+      {
+        const int h = g.out[k], w = g.target(h);
+        const double dw = item.first + cost(h);
+        if(dw >= dist[w] || dw > bound) continue;
+        if(dist[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
+        dist[w] = dw;
+        reached_by[w] = h;
+        queue.emplace(dw, w);
+      }
+    }
+  }
+};
+
 // For each leaf seam path, the part from one of its vertices to its tip
 // whose cheapest alternative (on interior edges, through vertices on no seam
 // and not on the input boundary, cost per halfedge `cost`) saves most, if
@@ -40,34 +115,14 @@ struct Seam_detour
 template <typename Cost>
 std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, double min_ratio, bool plain_start = false)
 {
+  const Seam_graph g(cm);
   const int nv = int(cm.number_of_vertices());
   const int nh = int(cm.corner_vertex.size());
-  auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
-  auto target = [&](int h) { return cm.corner_vertex[h]; };
-
-  // outgoing interior halfedges of each vertex, and which of them are seams
-  std::vector<int> offset(nv + 1, 0), out(nh);
-  std::vector<int> seam_degree(nv, 0);
-  std::vector<char> on_border(nv, 0);
-  for(int h = 0; h < nh; ++h)
-  {
-    if(cm.opposite[h] < 0) { on_border[source(h)] = on_border[target(h)] = 1; continue; }
-    ++offset[source(h) + 1];
-    if(cm.is_seam(h)) ++seam_degree[source(h)];
-  }
-  for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
-  {
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for(int h = 0; h < nh; ++h)
-      if(cm.opposite[h] >= 0) out[fill[source(h)]++] = h;
-  }
-
   std::vector<Seam_detour> detours;
-  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
-  std::vector<int> reached_by(nv, -1), touched;
+  Uncut_paths paths(nv);
   for(int tip = 0; tip < nv; ++tip)
   {
-    if(seam_degree[tip] != 1 || on_border[tip]) continue;
+    if(g.seam_degree[tip] != 1 || g.on_border[tip]) continue;
     // walk from the tip to the first vertex that is not a plain seam vertex
     std::vector<int> walk;      // halfedges, each towards the tip
     std::vector<double> length; // seam cost from the tip to the source of walk[i]
@@ -75,46 +130,25 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
     double l = 0;
     for(std::size_t guard = 0; guard < std::size_t(nh); ++guard)
     {
-      int next = -1;
-      for(int k = offset[v]; k < offset[v + 1]; ++k)
-        if(cm.is_seam(out[k]) && target(out[k]) != from) { next = out[k]; break; }
+      const int next = g.next_seam(v, from);
       if(next < 0) break;
       walk.push_back(cm.opposite[next]);
       l += cost(next);
       length.push_back(l);
       from = v;
-      v = target(next);
-      if(seam_degree[v] != 2 || on_border[v] || v == tip) break;
+      v = g.target(next);
+      if(g.seam_degree[v] != 2 || g.on_border[v] || v == tip) break;
     }
     if(walk.size() < 2 || v == tip) continue;
 
-    // cheapest paths from the tip through uncut vertices (the seam's own
-    // vertices end them): a shortcut from any vertex of the seam to its tip
-    typedef std::pair<double, int> Item;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-    dist[tip] = 0; touched.push_back(tip);
-    queue.emplace(0., tip);
-    while(!queue.empty())
-    {
-      const Item item = queue.top(); queue.pop();
-      const int u = item.first > dist[item.second] ? -1 : item.second;
-      if(u < 0 || (u != tip && (seam_degree[u] != 0 || on_border[u]))) continue;
-      for(int k = offset[u]; k < offset[u + 1]; ++k)
-      {
-        const int h = out[k], w = target(h);
-        const double dw = item.first + cost(h);
-        if(dw >= dist[w] || dw > l) continue;
-        if(dist[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
-        dist[w] = dw;
-        reached_by[w] = h;
-        queue.emplace(dw, w);
-      }
-    }
+    // a shortcut from any vertex of the seam to its tip
+    paths.run(g, cost, tip, l);
+    const std::vector<double>& dist = paths.dist;
     std::size_t best = 0;
     double saving = 0;
     for(std::size_t i = 1; i < walk.size() - (plain_start ? 1 : 0); ++i)
     {
-      const int start = source(walk[i]);
+      const int start = g.source(walk[i]);
       if(dist[start] * min_ratio <= length[i] && length[i] - dist[start] > saving)
       {
         best = i;
@@ -126,12 +160,11 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
       Seam_detour d;
       d.seam.assign(walk.rend() - best - 1, walk.rend());
       d.seam_cost = length[best];
-      d.shortcut_cost = dist[source(walk[best])];
-      for(int w = source(walk[best]); w != tip; w = source(reached_by[w])) d.shortcut.push_back(cm.opposite[reached_by[w]]);
+      d.shortcut_cost = dist[g.source(walk[best])];
+      for(int w = g.source(walk[best]); w != tip; w = g.source(paths.reached_by[w]))
+        d.shortcut.push_back(cm.opposite[paths.reached_by[w]]);
       detours.push_back(std::move(d));
     }
-    for(int w : touched) { dist[w] = std::numeric_limits<double>::infinity(); reached_by[w] = -1; }
-    touched.clear();
   }
   return detours;
 }
@@ -145,50 +178,29 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
 template <typename Cost>
 std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, double min_ratio)
 {
-  const int nv = int(cm.number_of_vertices());
+  const Seam_graph g(cm);
   const int nh = int(cm.corner_vertex.size());
-  auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
-  auto target = [&](int h) { return cm.corner_vertex[h]; };
-  std::vector<int> offset(nv + 1, 0), out(nh);
-  std::vector<int> seam_degree(nv, 0);
-  std::vector<char> on_border(nv, 0);
-  for(int h = 0; h < nh; ++h)
-  {
-    if(cm.opposite[h] < 0) { on_border[source(h)] = on_border[target(h)] = 1; continue; }
-    ++offset[source(h) + 1];
-    if(cm.is_seam(h)) ++seam_degree[source(h)];
-  }
-  for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
-  {
-    std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for(int h = 0; h < nh; ++h)
-      if(cm.opposite[h] >= 0) out[fill[source(h)]++] = h;
-  }
-  auto plain = [&](int v) { return seam_degree[v] == 2 && !on_border[v]; };
+  auto plain = [&](int v) { return g.seam_degree[v] == 2 && !g.on_border[v]; };
+  auto tip = [&](int v) { return g.seam_degree[v] == 1 && !g.on_border[v]; };
 
   std::vector<Seam_detour> reroutes;
   std::vector<char> walked(nh, 0);
-  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
-  std::vector<int> reached_by(nv, -1), touched;
+  Uncut_paths paths(cm.number_of_vertices());
   for(int h0 = 0; h0 < nh; ++h0)
   {
-    if(cm.opposite[h0] < 0 || !cm.is_seam(h0) || walked[h0] || plain(source(h0))) continue;
+    if(cm.opposite[h0] < 0 || !cm.is_seam(h0) || walked[h0] || plain(g.source(h0))) continue;
     // the path from a node along h0 to the next node
     std::vector<int> path{ h0 };
     walked[h0] = walked[cm.opposite[h0]] = 1;
-    for(std::size_t guard = 0; plain(target(path.back())) && guard < std::size_t(nh); ++guard)
+    for(std::size_t guard = 0; plain(g.target(path.back())) && guard < std::size_t(nh); ++guard)
     {
-      const int v = target(path.back()), from = source(path.back());
-      int next = -1;
-      for(int k = offset[v]; k < offset[v + 1]; ++k)
-        if(cm.is_seam(out[k]) && target(out[k]) != from) { next = out[k]; break; }
+      const int next = g.next_seam(g.target(path.back()), g.source(path.back()));
       if(next < 0 || walked[next]) break;
       path.push_back(next);
       walked[next] = walked[cm.opposite[next]] = 1;
     }
-    const int end = target(path.back());
-    if(plain(end) || (seam_degree[end] == 1 && !on_border[end]) ||
-       (seam_degree[source(h0)] == 1 && !on_border[source(h0)]) || path.size() < 3)
+    const int end = g.target(path.back());
+    if(plain(end) || tip(end) || tip(g.source(h0)) || path.size() < 3)
       continue; // a leaf path (seam_detours()), or a loop
     // length[i]: seam cost from the start to vertex i (target of path[i-1])
     std::vector<double> length(path.size() + 1, 0.);
@@ -198,43 +210,22 @@ std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, dou
     std::vector<int> best_shortcut;
     for(std::size_t i = 1; i + 2 < path.size(); ++i)
     {
-      const int start = target(path[i - 1]);
-      const double bound = length[path.size() - 1] - length[i];
-      typedef std::pair<double, int> Item;
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-      dist[start] = 0; touched.push_back(start);
-      queue.emplace(0., start);
-      while(!queue.empty())
-      {
-        const Item item = queue.top(); queue.pop();
-        const int u = item.first > dist[item.second] ? -1 : item.second;
-        if(u < 0 || (u != start && (seam_degree[u] != 0 || on_border[u]))) continue;
-        for(int k = offset[u]; k < offset[u + 1]; ++k)
-        {
-          const int h = out[k], w = target(h);
-          const double dw = item.first + cost(h);
-          if(dw >= dist[w] || dw > bound || cm.is_seam(h)) continue;
-          if(dist[w] == std::numeric_limits<double>::infinity()) touched.push_back(w);
-          dist[w] = dw;
-          reached_by[w] = h;
-          queue.emplace(dw, w);
-        }
-      }
+      const int start = g.target(path[i - 1]);
+      paths.run(g, cost, start, length[path.size() - 1] - length[i]);
+      const std::vector<double>& dist = paths.dist;
       for(std::size_t j = i + 2; j < path.size(); ++j)
       {
-        const int w = target(path[j - 1]);
+        const int w = g.target(path[j - 1]);
         const double along = length[j] - length[i];
         if(dist[w] * min_ratio <= along && along - dist[w] > saving)
         {
           saving = along - dist[w];
           best_i = i; best_j = j;
           best_shortcut.clear();
-          for(int x = w; x != start; x = source(reached_by[x])) best_shortcut.push_back(reached_by[x]);
+          for(int x = w; x != start; x = g.source(paths.reached_by[x])) best_shortcut.push_back(paths.reached_by[x]);
           std::reverse(best_shortcut.begin(), best_shortcut.end());
         }
       }
-      for(int w : touched) { dist[w] = std::numeric_limits<double>::infinity(); reached_by[w] = -1; }
-      touched.clear();
     }
     if(saving > 0)
     {

@@ -30,8 +30,9 @@ namespace internal {
 // shape, its side of the part then goes over to the other side in steps,
 // the region relaxing without flips after each. False, nothing changed, if
 // that region is not bounded by the two paths alone (the input boundary,
-// say) or cannot be laid out without flips. Overlaps are the caller's.
-inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_detour& d)
+// say) or cannot be laid out without flips. Overlaps are the caller's: if
+// true, `before` holds the configuration to restore.
+inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_detour& d, Uv_snapshot& before)
 {
   const int nf = int(cm.number_of_faces());
   const std::size_t nh = cm.corner_vertex.size();
@@ -66,8 +67,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
       for(int k = 0; k < 3 && valid && in_r[f]; ++k)
       {
         const int h = 3*f + k, o = cm.opposite[h];
-        if(on_cut[h]) valid = !in_r[o / 3];
-        else if(on_part[h]) valid = !in_r[o / 3];
+        if(on_cut[h] || on_part[h]) valid = !in_r[o / 3];
         else if(cm.is_seam(h)) valid = in_r[o / 3] != 0;
       }
     for(int h : d.seam) valid = valid && (in_r[h / 3] != in_r[cm.opposite[h] / 3]);
@@ -123,7 +123,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
     from.push_back(x[0]); from.push_back(x[1]);
     to.push_back(cm.uv[2 * cm.corner_uv[outside[i]]]); to.push_back(cm.uv[2 * cm.corner_uv[outside[i]] + 1]);
   }
-  const Uv_snapshot before = [&] { Uv_snapshot b; b.save(cm); return b; }();
+  before.save(cm);
   std::vector<char> on_loop(cm.number_of_vertices(), 0);
   for(int v : part_vertices) on_loop[v] = 1;
   for(int h : d.shortcut) on_loop[cm.corner_vertex[h]] = 1;
