@@ -19,10 +19,12 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -425,6 +427,41 @@ BOOST_AUTO_TEST_CASE(invalid_input_gives_an_error_and_leaves_the_maps_untouched)
     BOOST_TEST(SMSO::minimize_distortion(sm, uv, SMSO_np::gradient_tolerance(-1.)).status == SMSO::ERROR_WRONG_PARAMETER);
     BOOST_TEST(all_sentinel(sm, uv));
   }
+}
+
+// The dual step would take the cheapest split per unit of distortion; a new
+// slit must be 1.5 times cheaper than the cheapest boundary split to stay.
+BOOST_AUTO_TEST_CASE(a_slit_stays_a_candidate_only_when_clearly_cheaper_than_a_boundary_cut)
+{
+  using SMSO::internal::Operation;
+  auto op = [](SMSO::internal::Operation_type type, double d_sd, double d_se) {
+    Operation o;
+    o.type = type; o.d_sd = d_sd; o.d_se = d_se;
+    return o;
+  };
+  auto interior_splits = [](const std::vector<Operation>& ops) {
+    return std::count_if(ops.begin(), ops.end(), [](const Operation& o) { return o.type == SMSO::internal::INTERIOR_SPLIT; });
+  };
+  const std::vector<Operation> base = {
+    op(SMSO::internal::BOUNDARY_SPLIT, -0.5, 2.0),  // 4 seam per unit of E_SD
+    op(SMSO::internal::BOUNDARY_SPLIT, -1.0, 3.0),  // 3: the cheapest cut
+    op(SMSO::internal::BOUNDARY_SPLIT, 0.2, 0.1),   // lowers no distortion: no price
+    op(SMSO::internal::CORNER_MERGE, -1.0, -0.1) }; // not a split
+  for(double slit_cost : { 2.5, 2.1, 1.9, 1.0 })
+  {
+    std::vector<Operation> ops = base;
+    ops.push_back(op(SMSO::internal::INTERIOR_SPLIT, -2.0, 2 * slit_cost));
+    ops.push_back(op(SMSO::internal::INTERIOR_SPLIT, -1.0, 5.0));
+    SMSO::internal::drop_costly_slits(ops, 1.5);
+    // 3 / 1.5 = 2: a slit dearer than that goes, with every other slit
+    BOOST_TEST(interior_splits(ops) == (slit_cost < 2 ? 2 : 0));
+    BOOST_TEST(ops.size() == base.size() + std::size_t(interior_splits(ops)));
+  }
+  // with no boundary split that lowers the distortion, slits are all there is
+  std::vector<Operation> ops = { op(SMSO::internal::BOUNDARY_SPLIT, 0.1, 1.0),
+                                 op(SMSO::internal::INTERIOR_SPLIT, -1.0, 9.0) };
+  SMSO::internal::drop_costly_slits(ops, 1.5);
+  BOOST_TEST(ops.size() == 2u);
 }
 
 // A seam from the boundary vertex (0,4) of a unit grid to the interior tip

@@ -61,6 +61,9 @@ struct Alternating_settings
   // saves at least this fraction of the seams
   double detour_ratio = 1.1;
   double detour_min_saving = 0.01;
+  // bound mode: an interior split (a new slit) must cost this many times less
+  // seam per unit of distortion than the best boundary split
+  double slit_ratio = 1.5;
   bool bijective = false;           // scaffold around the charts
   Newton_settings newton;
 };
@@ -157,6 +160,8 @@ public:
       const bool above = e_sd > m_settings.distortion_bound;
       ops.erase(std::remove_if(ops.begin(), ops.end(), [above](const Operation& op) {
                   return above == (op.type == CORNER_MERGE); }), ops.end());
+      // and a new slit only where it clearly beats cutting from a boundary
+      drop_costly_slits(ops, m_settings.slit_ratio);
     }
     if(!m_settings.fixed_lambda && !dual_update(e_sd, ops))
     {

@@ -39,6 +39,25 @@ struct Operation
   double weighted(double lambda) const { return (1 - lambda) * d_sd + lambda * d_se; }
 };
 
+// Drops the interior splits from `ops` unless the cheapest of them costs
+// `ratio` times less seam per unit of E_SD removed than the cheapest boundary
+// split. A cut from a chart boundary keeps opening as it grows; a slit inside
+// a chart opens much less, which a stencil's score does not see (bunny: a
+// chin slit chosen at 1.3 times cheaper left seams 4.22 long, 3.41 without).
+inline void drop_costly_slits(std::vector<Operation>& ops, double ratio)
+{
+  double boundary = std::numeric_limits<double>::infinity(), interior = boundary;
+  for(const Operation& op : ops)
+  {
+    if(!(op.d_sd < 0 && op.d_se > 0)) continue;
+    double& cheapest = op.type == BOUNDARY_SPLIT ? boundary : interior;
+    if(op.type == BOUNDARY_SPLIT || op.type == INTERIOR_SPLIT) cheapest = (std::min)(cheapest, op.d_se / -op.d_sd);
+  }
+  if(std::isfinite(boundary) && interior * ratio > boundary)
+    ops.erase(std::remove_if(ops.begin(), ops.end(), [](const Operation& op) { return op.type == INTERIOR_SPLIT; }),
+              ops.end());
+}
+
 template <typename Energy>
 class Topology_step
 {
