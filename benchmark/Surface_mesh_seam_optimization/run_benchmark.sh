@@ -36,6 +36,8 @@
 #   --data-dir DIR shared data (default: <repo>/../shared/data, or $SMSO_SHARED_DATA)
 #   --build-dir D  build directory (default <repo>/build-bench)
 #   --jobs N       build parallelism (default 2)
+#   --keep-outputs DIR  keep the per-mesh outputs (OBJ, errors, uvmetrics JSON) in DIR;
+#                  by default they are deleted with the work directory at the end
 # Results are not asserted: the exit code is non-zero only if the build fails or
 # the program crashes (killed by a signal or an unexpected exit code). A mesh
 # that times out or is rejected gets a row with its status.
@@ -56,6 +58,7 @@ out_prefix=
 data_dir=${SMSO_SHARED_DATA:-$repo/../shared/data}
 build_dir=$repo/build-bench
 jobs=2
+keep_dir=
 meshes=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -73,6 +76,7 @@ while [ $# -gt 0 ]; do
     --data-dir) data_dir=$2; shift ;;
     --build-dir) build_dir=$2; shift ;;
     --jobs) jobs=$2; shift ;;
+    --keep-outputs) keep_dir=$2; shift ;;
     -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
     *) meshes+=("$1"); [ "$mode" = profile ] || mode=custom ;;
@@ -120,6 +124,8 @@ elif [ "$mode" = full ]; then
 fi
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/smso_bench.XXXXXX")
+# (a run of 19 meshes leaves about 20 MB of OBJ files)
+trap 'rm -rf "$work"' EXIT
 out_dir=$work/out
 mkdir -p "$out_dir"
 raw=$work/raw.csv
@@ -127,7 +133,7 @@ raw=$work/raw.csv
 crashed=0
 start_date=$(date -u '+%Y-%m-%d %H:%M UTC')
 load_before=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
-echo "mode $mode: ${#meshes[@]} meshes, bound $bound, timeout ${timeout_s}s, outputs in $out_dir" >&2
+echo "mode $mode: ${#meshes[@]} meshes, bound $bound, timeout ${timeout_s}s, work directory $work" >&2
 
 for m in "${meshes[@]}"; do
   case "$m" in
@@ -278,5 +284,8 @@ print(f"\nwrote {prefix}.csv and {prefix}.md", file=sys.stderr)
 EOF
 py=$?
 [ $py -eq 0 ] || { echo "report generation failed" >&2; exit 1; }
-echo "per-mesh outputs: $out_dir" >&2
+if [ -n "$keep_dir" ]; then
+  mkdir -p "$keep_dir" && cp "$work"/*.err "$work"/*.json "$out_dir"/* "$keep_dir"/ 2>/dev/null
+  echo "per-mesh outputs: $keep_dir" >&2
+fi
 exit $crashed
