@@ -326,8 +326,8 @@ BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)
 BOOST_AUTO_TEST_CASE(the_scaffold_prevents_overlaps)
 {
   // The octopus' flattening folds its tentacles over each other unless the
-  // space around the chart is meshed (a fixed, high lambda keeps the runs short:
-  // 146 overlapping pairs without it).
+  // space around the chart is meshed (146 overlapping pairs at the fixed
+  // lambda 0.7, which keeps the runs short).
   const std::string dir = SMSO_TEST_DATA_DIR, name = "octopus_mainComp_f6000.obj";
   Run free_run, bijective_run;
   run(name, free_run, SMSO_np::combine(SMSO_np::seam_weight(0.7), SMSO_np::bijective(false)), dir);

@@ -50,8 +50,9 @@ inline void drop_costly_slits(std::vector<Operation>& ops, double ratio)
   for(const Operation& op : ops)
   {
     if(!(op.d_sd < 0 && op.d_se > 0)) continue;
-    double& cheapest = op.type == BOUNDARY_SPLIT ? boundary : interior;
-    if(op.type == BOUNDARY_SPLIT || op.type == INTERIOR_SPLIT) cheapest = (std::min)(cheapest, op.d_se / -op.d_sd);
+    const double price = op.d_se / -op.d_sd;
+    if(op.type == BOUNDARY_SPLIT) boundary = (std::min)(boundary, price);
+    else if(op.type == INTERIOR_SPLIT) interior = (std::min)(interior, price);
   }
   if(std::isfinite(boundary) && interior * ratio > boundary)
     ops.erase(std::remove_if(ops.begin(), ops.end(), [](const Operation& op) { return op.type == INTERIOR_SPLIT; }),
