@@ -28,6 +28,7 @@ CGAL_SMSO_NAMED_PARAMETER(maximum_number_of_iterations)
 CGAL_SMSO_NAMED_PARAMETER(edge_seam_weight_map)
 CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
+CGAL_SMSO_NAMED_PARAMETER(time_limit)
 #undef CGAL_SMSO_NAMED_PARAMETER
 } // namespace internal_np
 
@@ -62,6 +63,8 @@ CGAL_SMSO_NAMED_PARAMETER(edge_seam_weight_map)
 CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
 /// rounds of unzipping part of the seams (and of straightening winding ones) and cutting again after the first result (default 6; 0: none)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
+/// seconds (> 0) after which the run stops with the best result so far (status `WARNING_TIME_LIMIT`; default: none)
+CGAL_SMSO_NAMED_PARAMETER(time_limit)
 #undef CGAL_SMSO_NAMED_PARAMETER
 
 namespace internal {
