@@ -29,6 +29,10 @@ CGAL_SMSO_NAMED_PARAMETER(edge_seam_weight_map)
 CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
 CGAL_SMSO_NAMED_PARAMETER(time_limit)
+CGAL_SMSO_NAMED_PARAMETER(texture_size)
+CGAL_SMSO_NAMED_PARAMETER(margin)
+CGAL_SMSO_NAMED_PARAMETER(allow_rotation)
+CGAL_SMSO_NAMED_PARAMETER(equal_texel_density)
 #undef CGAL_SMSO_NAMED_PARAMETER
 } // namespace internal_np
 
@@ -65,6 +69,14 @@ CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
 /// seconds (> 0) after which the run stops with the best result so far (status `WARNING_TIME_LIMIT`; default: none)
 CGAL_SMSO_NAMED_PARAMETER(time_limit)
+/// `pack_charts()`: side of the square texture in texels (default 1024); given to `optimize_seams()`, it packs the result
+CGAL_SMSO_NAMED_PARAMETER(texture_size)
+/// `pack_charts()`: texels between two charts and between a chart and the border (default 4)
+CGAL_SMSO_NAMED_PARAMETER(margin)
+/// `pack_charts()`: charts may be rotated to their minimum-area bounding rectangle and by quarter turns (default true)
+CGAL_SMSO_NAMED_PARAMETER(allow_rotation)
+/// `pack_charts()`: each chart scaled to one UV area / 3D area ratio, instead of one factor for all charts (default false)
+CGAL_SMSO_NAMED_PARAMETER(equal_texel_density)
 #undef CGAL_SMSO_NAMED_PARAMETER
 
 namespace internal {
