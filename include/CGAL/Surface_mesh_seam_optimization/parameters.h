@@ -69,7 +69,7 @@ CGAL_SMSO_NAMED_PARAMETER(gradient_tolerance)
 CGAL_SMSO_NAMED_PARAMETER(number_of_recut_rounds)
 /// seconds (> 0) after which the run stops with the best result so far (status `WARNING_TIME_LIMIT`; default: none)
 CGAL_SMSO_NAMED_PARAMETER(time_limit)
-/// `pack_charts()`: side of the square texture in texels (default 1024); given to `optimize_seams()`, it packs the result
+/// `pack_charts()`: side of the square texture in texels (default 1024)
 CGAL_SMSO_NAMED_PARAMETER(texture_size)
 /// `pack_charts()`: texels between two charts and between a chart and the border (default 4)
 CGAL_SMSO_NAMED_PARAMETER(margin)
