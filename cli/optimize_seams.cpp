@@ -7,16 +7,12 @@
 // report. Every failure is one line on stderr and a non-zero exit code
 // (1: input or run failed, 2: bad options).
 
+#include "load_mesh.h"
+#include "output_files.h"
 #include "picture_common.h"
 #include "pictures.h"
 #include "repair_input.h"
 #include "run_optimization.h"
-
-#include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
@@ -146,19 +142,21 @@ void print_help(std::ostream& os)
      << "\n"
      << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
      << "                          three corners are triangulated (a note says so); a\n"
-     << "                          non-manifold mesh or a zero-area triangle is an error\n"
-     << "                          (see --repair).\n"
+     << "                          non-manifold mesh or a zero-area triangle (twice its area\n"
+     << "                          below 1e-12 times its longest edge squared) is an error\n"
+     << "                          (see --repair). Faces are numbered from 1 in messages.\n"
      << "                          Each connected component must be a topological disk or\n"
      << "                          closed of genus 0 (then first cut open by a short slit).\n"
      << "\n"
      << "Options:\n"
-     << "  -o, --output OUT.obj    output OBJ (default: INPUT's name without extension +\n"
-     << "                          \"_uv.obj\", in the current directory)\n"
+     << "  -o, --output OUT.obj    output OBJ, must end in .obj (default: INPUT's name\n"
+     << "                          without extension + \"_uv.obj\", in the current directory)\n"
      << "  --repair                repair the input first (CGAL Polygon_mesh_processing):\n"
      << "                          merge duplicate points, drop repeated corners, faces with\n"
      << "                          fewer than 3 corners, duplicate faces and unused points,\n"
      << "                          orient the faces (duplicating points at non-manifold edges\n"
-     << "                          and vertices), remove zero-area faces; what changed is\n"
+     << "                          and vertices), collapse or flip away zero-area triangles;\n"
+     << "                          what changed is\n"
      << "                          one stderr line and \"repair\" in the report (default: off)\n"
      << "  --use-input-uv          start from the input's own UV map (an OBJ with a vt for\n"
      << "                          every face corner, no flipped triangle) instead of\n"
@@ -221,7 +219,8 @@ void print_help(std::ostream& os)
      << "\n"
      << "Exit status: 0 success (also when the iteration cap was reached or the bound could\n"
      << "not be met: see the warning and the report), 1 invalid input or failed run,\n"
-     << "2 invalid options.\n";
+     << "2 invalid options, or an output that cannot be written (checked before the run;\n"
+     << "outputs go to a temporary file renamed over the target: never half-written).\n";
 }
 
 // A whole-string finite number ("4.1", "1e-2"); false for anything else.
@@ -594,305 +593,11 @@ bool write_json_report(const std::string& path, const Run_report& r)
     out += ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");
   }
   out += "}\n";
-  return write_text_file(path, out);
+  return write_atomically(path, [&out](const std::string& tmp) { return write_text_file(tmp, out); });
 }
 
 // ---------------------------------------------------------------------------
-// Input
-
-struct Load_failure
-{
-  std::string status;   // Error_code name, or ERROR_INPUT when the file itself is the problem
-  std::string line;     // the stderr message after "optimize_seams: error: "
-};
-
-std::string lowercase_extension(const std::string& path)
-{
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-Load_failure code_failure(SMSO::Error_code code, const std::string& line)
-{
-  return Load_failure{SMSO::get_error_code_name(code), line};
-}
-
-// Reads a polygon soup (so that defects can be named, where read_polygon_mesh
-// would only say "false"), checks it, and builds a triangle mesh. With
-// `repair`, fixes what Polygon_mesh_processing can fix instead of refusing
-// it, and counts the changes in `repair`. Returns true on success; otherwise
-// `failure` says why.
-bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& notes,
-               Load_failure& failure, Repair_summary* repair = nullptr)
-{
-  // What an error line adds when --repair would have fixed the defect.
-  const std::string try_repair = repair ? "" : " (--repair fixes this)";
-  std::error_code ec;
-  if(!std::filesystem::exists(path, ec))
-  {
-    failure = {"ERROR_INPUT", "cannot open input '" + path + "': No such file or directory"};
-    return false;
-  }
-  if(!std::filesystem::is_regular_file(path, ec))
-  {
-    failure = {"ERROR_INPUT", "cannot open input '" + path + "': not a regular file"};
-    return false;
-  }
-  {
-    std::ifstream probe(path, std::ios::binary);
-    if(!probe)
-    {
-      failure = {"ERROR_INPUT", "cannot open input '" + path + "': " + std::strerror(errno)};
-      return false;
-    }
-  }
-  if(std::filesystem::file_size(path, ec) == 0 && !ec)
-  {
-    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh is empty (no face): '" + path + "'");
-    return false;
-  }
-  const std::string ext = lowercase_extension(path);
-  if(ext != ".obj" && ext != ".off" && ext != ".ply")
-  {
-    failure = {"ERROR_INPUT", "cannot read '" + path + "': unsupported format '" + ext +
-                              "' (expected .obj, .off or .ply)"};
-    return false;
-  }
-
-  std::vector<Point_3> points;
-  std::vector<std::vector<std::size_t> > polygons;
-  bool read_ok = false;
-  {
-    // CGAL's readers may print parse details to std::cerr; keep stderr to one line.
-    std::ostringstream sink;
-    std::streambuf* old = std::cerr.rdbuf(sink.rdbuf());
-    try
-    {
-      read_ok = CGAL::IO::read_polygon_soup(path, points, polygons,
-                                            CGAL::parameters::verbose(false));
-    }
-    catch(...)
-    {
-      read_ok = false;
-    }
-    std::cerr.rdbuf(old);
-  }
-  if(!read_ok)
-  {
-    failure = {"ERROR_INPUT", "cannot read '" + path + "': not a valid " + ext.substr(1) + " file"};
-    return false;
-  }
-  if(polygons.empty() || points.empty())
-  {
-    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh is empty (no face): '" + path + "'");
-    return false;
-  }
-
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t v : polygons[f])
-      if(v >= points.size())
-      {
-        failure = {"ERROR_INPUT", "cannot read '" + path + "': face " + std::to_string(f + 1) +
-                                  " refers to a missing vertex"};
-        return false;
-      }
-
-  if(repair)
-  {
-    optimize_seams_cli::repair_polygon_soup(points, polygons, *repair);
-    if(polygons.empty())
-    {
-      failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh has no valid face left after --repair ('" +
-                                                       path + "')");
-      return false;
-    }
-  }
-
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    const Point_3& p = points[i];
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-    {
-      failure = code_failure(SMSO::ERROR_NON_FINITE_COORDINATES,
-                             "input has a non-finite coordinate (vertex " + std::to_string(i + 1) + ")" +
-                               try_repair);
-      return false;
-    }
-  }
-
-  bool has_polygons = false;
-  std::vector<char> used(points.size(), 0);
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-  {
-    const auto& poly = polygons[f];
-    if(poly.size() < 3)
-    {
-      failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
-                             "input face " + std::to_string(f + 1) + " has fewer than three corners" + try_repair);
-      return false;
-    }
-    has_polygons = has_polygons || poly.size() > 3;
-    for(std::size_t v : poly)
-      used[v] = 1;
-  }
-
-  // Zero-area triangles make the distortion energy infinite: refuse them here
-  // with the face number, rather than deep inside the solver. (--repair
-  // removes the collinear ones from the mesh below.)
-  std::size_t degenerate = 0, first_degenerate = 0;
-  for(std::size_t f = 0; f < polygons.size() && !repair; ++f)
-  {
-    const auto& poly = polygons[f];
-    bool bad = false;
-    for(std::size_t i = 0; i < poly.size() && !bad; ++i)
-      for(std::size_t j = i + 1; j < poly.size() && !bad; ++j)
-        bad = points[poly[i]] == points[poly[j]];
-    if(!bad && poly.size() == 3)
-      bad = CGAL::collinear(points[poly[0]], points[poly[1]], points[poly[2]]);
-    if(bad && degenerate++ == 0)
-      first_degenerate = f;
-  }
-  if(degenerate > 0)
-  {
-    failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
-                           "input has " + std::to_string(degenerate) +
-                           " zero-area (degenerate) face(s); the first is face " +
-                           std::to_string(first_degenerate + 1) + try_repair);
-    return false;
-  }
-
-  // Unreferenced points would become isolated vertices: drop them.
-  const std::size_t unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
-  if(unused > 0)
-  {
-    std::vector<std::size_t> new_index(points.size());
-    std::vector<Point_3> kept;
-    kept.reserve(points.size() - unused);
-    for(std::size_t i = 0; i < points.size(); ++i)
-      if(used[i])
-      {
-        new_index[i] = kept.size();
-        kept.push_back(points[i]);
-      }
-    for(auto& poly : polygons)
-      for(std::size_t& v : poly)
-        v = new_index[v];
-    points.swap(kept);
-    notes.push_back("ignored " + std::to_string(unused) + " vertices used by no face");
-  }
-
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-  {
-    // Inconsistent orientation is fixable; a non-manifold edge or vertex is
-    // not, unless --repair lets orient_polygon_soup duplicate points.
-    std::vector<Point_3> oriented_points = points;
-    std::vector<std::vector<std::size_t> > oriented = polygons;
-    const bool no_duplication = PMP::orient_polygon_soup(oriented_points, oriented);
-    if(no_duplication && oriented_points.size() == points.size() &&
-       PMP::is_polygon_soup_a_polygon_mesh(oriented))
-    {
-      polygons.swap(oriented);
-      notes.push_back("reoriented faces to a consistent orientation");
-    }
-    else if(repair && orient_polygon_soup_duplicating(points, polygons, *repair))
-    {
-    }
-    else
-    {
-      std::map<std::pair<std::size_t, std::size_t>, int> edge_faces;
-      for(const auto& poly : polygons)
-        for(std::size_t i = 0; i < poly.size(); ++i)
-        {
-          std::size_t a = poly[i], b = poly[(i + 1) % poly.size()];
-          ++edge_faces[std::make_pair(std::min(a, b), std::max(a, b))];
-        }
-      std::size_t bad_edges = 0;
-      for(const auto& e : edge_faces)
-        bad_edges += e.second > 2 ? 1 : 0;
-      std::string detail = "input is not a manifold mesh (non-manifold edge or vertex): ";
-      if(bad_edges > 0)
-        detail += std::to_string(bad_edges) + " edge(s) with more than two faces";
-      else
-        detail += "faces around a vertex do not form a single fan, or the surface is not orientable";
-      failure = code_failure(SMSO::ERROR_NON_MANIFOLD_MESH,
-                             detail + (repair ? " (--repair could not fix it)" : try_repair));
-      return false;
-    }
-  }
-
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  if(has_polygons)
-  {
-    const std::size_t before = num_faces(mesh);
-    if(!PMP::triangulate_faces(mesh))
-    {
-      failure = code_failure(SMSO::ERROR_NON_TRIANGULAR_MESH,
-                             "input has a polygon that could not be triangulated");
-      return false;
-    }
-    notes.push_back("triangulated polygons: " + std::to_string(before) + " faces became " +
-                    std::to_string(num_faces(mesh)) + " triangles");
-  }
-  std::size_t bad = 0;
-  if(repair)
-    bad = repair_degenerate_faces(mesh, *repair);
-  else if(has_polygons)
-    for(face_descriptor f : faces(mesh))
-      bad += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
-  if(bad > 0)
-  {
-    failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
-                           "input has " + std::to_string(bad) + " zero-area triangle(s) " +
-                           (repair ? "that --repair could not remove" : "after triangulating its polygons" +
-                                                                            try_repair));
-    return false;
-  }
-  if(num_faces(mesh) == 0)
-  {
-    failure = code_failure(SMSO::ERROR_EMPTY_MESH, "input mesh has no face left after --repair");
-    return false;
-  }
-  return true;
-}
-
-// --use-input-uv: reads an OBJ with its per-corner UVs into the empty `mesh`
-// and `uvmap`. Returns true on success; otherwise `failure` says why.
-template <typename UVMap>
-bool load_mesh_with_uv_map(const std::string& path, Mesh& mesh, UVMap uvmap, Load_failure& failure)
-{
-  std::error_code ec;
-  if(!std::filesystem::is_regular_file(path, ec))
-  {
-    failure = {"ERROR_INPUT", "cannot open input '" + path + "': " +
-                              (std::filesystem::exists(path, ec) ? "not a regular file"
-                                                                 : "No such file or directory")};
-    return false;
-  }
-  if(lowercase_extension(path) != ".obj")
-  {
-    failure = {"ERROR_INPUT", "option '--use-input-uv' needs an .obj input with texture coordinates, not '" +
-                              path + "'"};
-    return false;
-  }
-  std::string error;
-  bool ok = false;
-  try
-  {
-    ok = SMSO::IO::read_OBJ_with_uv_map(path, mesh, uvmap, error);
-  }
-  catch(const std::exception& e)
-  {
-    error = e.what();
-  }
-  if(!ok)
-  {
-    failure = {"ERROR_INPUT", "--use-input-uv: cannot read a UV map: " + error};
-    return false;
-  }
-  return true;
-}
+// Input: load_mesh.h
 
 // Seams of a per-corner UV map: the edges whose two sides disagree on a UV.
 template <typename UVMap, typename SeamMap>
@@ -907,6 +612,54 @@ void seams_from_uv_map(const Mesh& mesh, UVMap uvmap, SeamMap seams)
     put(seams, e, get(uvmap, h) != get(uvmap, prev(o, mesh)) ||
                   get(uvmap, prev(h, mesh)) != get(uvmap, o));
   }
+}
+
+// ---------------------------------------------------------------------------
+// Outputs, checked before the run: a bad path is a usage error found in
+// milliseconds, not after minutes of optimization.
+
+std::string output_path(const Options& options)
+{
+  return options.output.empty() ? std::filesystem::path(options.input).stem().string() + "_uv.obj"
+                                : options.output;
+}
+
+bool check_output_paths(const Options& options, std::string& error)
+{
+  const std::string output = output_path(options);
+  if(lowercase_extension(output) != ".obj")
+  {
+    error = "option '-o' writes an OBJ (the format with per-corner UVs): '" + output +
+            "' does not end in .obj";
+    return false;
+  }
+  const std::pair<const char*, const std::string*> outputs[] = {
+    {"-o", &output}, {"--report", &options.report}, {"--svg", &options.svg}, {"--png", &options.png}};
+  for(std::size_t i = 0; i < 4; ++i)
+  {
+    const std::string& path = *outputs[i].second;
+    if(path.empty())
+      continue;
+    if(same_file(path, options.input))
+    {
+      error = std::string("option '") + outputs[i].first + "' would overwrite the input '" + options.input + "'";
+      return false;
+    }
+    for(std::size_t j = 0; j < i; ++j)
+      if(!outputs[j].second->empty() && same_file(path, *outputs[j].second))
+      {
+        error = std::string("options '") + outputs[j].first + "' and '" + outputs[i].first +
+                "' name the same file '" + path + "'";
+        return false;
+      }
+    std::string why;
+    if(!check_writable(path, why))
+    {
+      error = std::string("cannot write '") + path + "' (option '" + outputs[i].first + "'): " + why;
+      return false;
+    }
+  }
+  return true;
 }
 
 // ---------------------------------------------------------------------------
@@ -1180,10 +933,10 @@ int run(const Options& options)
     report.normalized = true;
   }
 
-  report.output = options.output.empty()
-                    ? std::filesystem::path(options.input).stem().string() + "_uv.obj"
-                    : options.output;
-  if(!SMSO::IO::write_OBJ_with_uv_map(report.output, mesh, uvmap))
+  report.output = output_path(options);
+  if(!write_atomically(report.output, [&](const std::string& tmp) {
+       return SMSO::IO::write_OBJ_with_uv_map(tmp, mesh, uvmap);
+     }))
   {
     const std::string out = report.output;
     report.output.clear();
@@ -1204,7 +957,9 @@ int run(const Options& options)
     caption.energy = energy_name(options.energy);
   if(!options.svg.empty())
   {
-    if(!write_uv_layout_svg_file(options.svg, mesh, picture_uvmap, seams, caption))
+    if(!write_atomically(options.svg, [&](const std::string& tmp) {
+         return write_uv_layout_svg_file(tmp, mesh, picture_uvmap, seams, caption);
+       }))
     {
       report.status = "ERROR_OUTPUT";
       report.message = "cannot write '" + options.svg + "'";
@@ -1216,8 +971,12 @@ int run(const Options& options)
   if(!options.png.empty())
   {
     std::string error;
-    if(!render_png_file(options.png, mesh, picture_uvmap, seams, error))
+    if(!write_atomically(options.png, [&](const std::string& tmp) {
+         return render_png_file(tmp, mesh, picture_uvmap, seams, error);
+       }))
     {
+      if(error.empty() || error.find(".tmp-") != std::string::npos)
+        error = "cannot write '" + options.png + "'";
       report.status = "ERROR_OUTPUT";
       report.message = error;
       print_error(error);
@@ -1276,6 +1035,11 @@ int main(int argc, char* argv[])
         return EXIT_USAGE;
       case Parse_status::RUN:
         break;
+    }
+    if(!check_output_paths(options, error))
+    {
+      print_error(error);
+      return EXIT_USAGE;
     }
     return run(options);
   }

@@ -15,6 +15,11 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 
+#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
+
+#include <algorithm>
+#include <limits>
+
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -33,7 +38,7 @@ struct Repair_summary
   std::size_t isolated_points_removed = 0;      // used by no face
   std::size_t points_duplicated = 0;            // to make edges and vertices manifold (orient_polygon_soup)
   bool reoriented = false;                      // faces flipped to a consistent orientation
-  std::size_t degenerate_faces_removed = 0;     // zero-area triangles (collapsed or flipped away)
+  std::size_t degenerate_faces_removed = 0;     // zero-area triangles (removed, collapsed or flipped away)
   std::size_t non_manifold_vertices_split = 0;  // after the degenerate faces went
 
   // (JSON key, count) of every kind of change, in the order they are made.
@@ -152,28 +157,70 @@ bool orient_polygon_soup_duplicating(std::vector<Point>& points, std::vector<Pol
   return PMP::is_polygon_soup_a_polygon_mesh(polygons);
 }
 
-// Mesh stage: removes zero-area triangles (edge collapses and flips), then
-// splits the non-manifold vertices that this may leave. Returns the number of
+// The one definition of a zero-area triangle, the library's
+// (compute_initial_parameterization()): twice its area below
+// degenerate_triangle_threshold() times its longest edge squared, so that it
+// does not depend on the scale or position of the mesh.
+template <typename Point>
+bool is_zero_area_triangle(const Point& a, const Point& b, const Point& c)
+{
+  const double u[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
+  const double w[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  auto sq = [](const Point& p, const Point& q) {
+    return (p.x() - q.x()) * (p.x() - q.x()) + (p.y() - q.y()) * (p.y() - q.y()) + (p.z() - q.z()) * (p.z() - q.z());
+  };
+  const double lmax2 = (std::max)({sq(a, b), sq(b, c), sq(c, a)});
+  return !(twice_area > CGAL::Surface_mesh_seam_optimization::internal::degenerate_triangle_threshold() * lmax2);
+}
+
+template <typename TriangleMesh>
+bool is_zero_area_face(typename boost::graph_traits<TriangleMesh>::face_descriptor f, const TriangleMesh& mesh)
+{
+  const auto h = halfedge(f, mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  return is_zero_area_triangle(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)),
+                               get(vpm, target(next(h, mesh), mesh)));
+}
+
+// Mesh stage: removes the zero-area triangles (is_zero_area_triangle()):
+// exact ones by PMP::remove_degenerate_faces(), the others as needles (their
+// shortest edge collapsed) or caps (their longest edge flipped), then splits
+// the non-manifold vertices that this may leave. Returns the number of
 // zero-area faces left (0 when everything was repaired).
 template <typename TriangleMesh>
 std::size_t repair_degenerate_faces(TriangleMesh& mesh, Repair_summary& summary)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  auto count_degenerate = [&mesh]() {
-    std::size_t n = 0;
-    for(auto f : faces(mesh))
-      n += PMP::is_degenerate_triangle_face(f, mesh) ? 1 : 0;
-    return n;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  auto zero_area_faces = [&mesh]() {
+    std::vector<face_descriptor> bad;
+    for(face_descriptor f : faces(mesh))
+      if(is_zero_area_face(f, mesh))
+        bad.push_back(f);
+    return bad;
   };
-  if(count_degenerate() == 0)
+  const std::size_t before = zero_area_faces().size();
+  if(before == 0)
     return 0;
-  const std::size_t before = num_faces(mesh);
   PMP::remove_degenerate_faces(mesh);
+  std::vector<face_descriptor> bad = zero_area_faces();
+  if(!bad.empty())
+  {
+    // Thresholds that take in every zero-area triangle: one that is not a
+    // needle at a length ratio of 1e6 has angles below 1e-6 at its longest
+    // edge, hence a cosine below -1 + 2e-12 at the opposite corner.
+    PMP::experimental::remove_almost_degenerate_faces(bad, mesh, -1 + 4e-12, 1e6,
+                                                      (std::numeric_limits<double>::max)());
+    PMP::remove_degenerate_faces(mesh);
+  }
   PMP::remove_isolated_vertices(mesh);
   mesh.collect_garbage();
-  summary.degenerate_faces_removed = before - num_faces(mesh);
   summary.non_manifold_vertices_split = PMP::duplicate_non_manifold_vertices(mesh);
-  return count_degenerate();
+  const std::size_t after = zero_area_faces().size();
+  summary.degenerate_faces_removed = before > after ? before - after : 0;
+  return after;
 }
 
 } // namespace optimize_seams_cli

@@ -110,9 +110,9 @@ usage_error "--threads" --threads 0
 usage_error "--threads" --threads two
 usage_error "exclusive" --repair --use-input-uv
 
-# An unwritable picture path is a run failure (exit 1) with one line.
+# An unwritable picture path is found before the run: a usage error (exit 2), one line.
 "$BIN" "$DATA/cat_f1500.obj" -o w.obj --svg no/such/dir/x.svg --quiet >out.txt 2>err.txt
 rc=$?
-[ "$rc" -eq 1 ] || fail "unwritable svg: exit code $rc, expected 1 (stderr: $(cat err.txt))"
+[ "$rc" -eq 2 ] || fail "unwritable svg: exit code $rc, expected 2 (stderr: $(cat err.txt))"
 [ "$(wc -l <err.txt)" -eq 1 ] && grep -q "x.svg" err.txt || fail "unwritable svg: $(cat err.txt)"
 echo "ok"
