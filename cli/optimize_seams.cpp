@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/IO/OBJ.h>
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -110,6 +111,10 @@ struct Options
   bool has_recut_rounds = false;
   std::size_t recut_rounds = default_recut_rounds; // bound mode only
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
+  bool pack = false;                      // charts packed into [0,1]^2 (SMSO::pack_charts)
+  double texture_size = 1024;             // --pack, --normalize with several charts: texels
+  double margin = 4;                      // texels between charts and to the border
+  bool has_packing_option = false;        // --texture-size or --margin given
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
   double time_limit = 0;                  // seconds; 0: none
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
@@ -163,8 +168,20 @@ void print_help(std::ostream& os)
      << "                          computing one; its seams are those of the map\n"
      << "                          (default: off)\n"
      << "  --normalize             write the UVs scaled uniformly (one factor for all charts)\n"
+     << "                          and packed as with --pack when there are several charts;\n"
+     << "                          one chart is scaled\n"
      << "                          and translated into [0,1]^2; the report's e_sd is that of\n"
      << "                          the unnormalized map (default: off)\n"
+     << "  --pack                  lay all charts out in [0,1]^2 without overlap, each moved\n"
+     << "                          rigidly (rotated to its smallest bounding rectangle) and\n"
+     << "                          all scaled by one factor, as large as fits in a square\n"
+     << "                          texture of --texture-size texels with --margin texels\n"
+     << "                          around each chart; the report gives the fill rate\n"
+     << "                          (default: off)\n"
+     << "  --texture-size N        texture side in texels for --pack, an integer >= 1\n"
+     << "                          (default: 1024)\n"
+     << "  --margin M              texels between charts and to the border for --pack,\n"
+     << "                          >= 0 and < N / 2 (default: 4)\n"
      << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
      << "                          as found while E_SD <= B (default: " << default_distortion_bound
      << ")\n"
@@ -209,6 +226,7 @@ void print_help(std::ostream& os)
      << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
      << "                          initial_e_sd, distortion_bound, bound_met, seam_weight,\n"
      << "                          lambda, seam_length, seam_length_normalized, charts,\n"
+     << "                          normalized, packed, texture_size, margin, fill_rate,\n"
      << "                          iterations, topology_operations, bijective,\n"
      << "                          overlapping_triangle_pairs, scaffold_rebuilds, energy,\n"
      << "                          threads, repair, notes, seconds, faces, vertices, input,\n"
@@ -306,7 +324,7 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
     // Switches, and options whose value is a file name.
     const std::pair<const char*, bool*> switches[] = {
       {"--repair", &options.repair}, {"--keep-seams", &options.keep_seams},
-      {"--use-input-uv", &options.use_input_uv}, {"--normalize", &options.normalize},
+      {"--use-input-uv", &options.use_input_uv}, {"--normalize", &options.normalize}, {"--pack", &options.pack},
       {"--quiet", &options.quiet}, {"--no-bijectivity", &options.no_bijectivity}};
     const std::pair<const char*, std::string*> paths[] = {
       {"-o", &options.output}, {"--output", &options.output}, {"--report", &options.report},
@@ -370,6 +388,24 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
         error = "option '--time-limit' needs a number of seconds > 0, not '" + s + "'";
         return Parse_status::ERROR;
       }
+    }
+    else if(name == "--texture-size" || name == "--margin")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      std::size_t n = 0;
+      const bool size = name == "--texture-size";
+      if(size ? !parse_size(s, n) || n < 1 || n > 65536
+              : !parse_double(s, options.margin) || !(options.margin >= 0.))
+      {
+        error = size ? "option '--texture-size' needs an integer from 1 to 65536, not '" + s + "'"
+                     : "option '--margin' needs a number of texels >= 0, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      if(size)
+        options.texture_size = double(n);
+      options.has_packing_option = true;
     }
     else if(name == "--distortion-bound")
     {
@@ -447,6 +483,16 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
     error = "option '--time-limit' is not supported with '--keep-seams' (that mode cannot be stopped early)";
     return Parse_status::ERROR;
   }
+  if(options.has_packing_option && !options.pack && !options.normalize)
+  {
+    error = "options '--texture-size' and '--margin' apply to '--pack' (or '--normalize')";
+    return Parse_status::ERROR;
+  }
+  if(!(2 * options.margin < options.texture_size))
+  {
+    error = "option '--margin' must be less than half of the texture size";
+    return Parse_status::ERROR;
+  }
   if(options.use_input_uv && options.repair)
   {
     error = "options '--use-input-uv' and '--repair' are exclusive (a repair would not keep the input's UVs)";
@@ -473,6 +519,8 @@ struct Run_report
   double seam_weight = 0;                               // seam-weight mode only
   std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
   bool normalized = false;                              // --normalize applied to the written UVs
+  bool packed = false;                                  // charts packed (--pack, or --normalize with several)
+  double texture_size = 0, margin = 0, fill_rate = 0;   // of the packing
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
   std::size_t threads = 0;                              // --threads; 0: default
   bool repair = false;                                  // --repair asked
@@ -550,6 +598,10 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("iterations", std::to_string(res.iterations));
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
   fields.emplace_back("normalized", r.normalized ? "true" : "false");
+  fields.emplace_back("packed", r.packed ? "true" : "false");
+  fields.emplace_back("texture_size", r.packed ? json_number(r.texture_size) : "null");
+  fields.emplace_back("margin", r.packed ? json_number(r.margin) : "null");
+  fields.emplace_back("fill_rate", r.packed ? json_number(r.fill_rate) : "null");
   // Checked on the result (no flip, no overlapping pair), not assumed from the option.
   fields.emplace_back("bijective", !ran ? "null" : (res.bijective ? "true" : "false"));
   fields.emplace_back("overlapping_triangle_pairs", !ran ? "null" : std::to_string(res.overlapping_triangle_pairs));
@@ -921,7 +973,7 @@ int run(const Options& options)
   // The pictures use the map at its own scale (per-triangle distortion): keep
   // a copy when --normalize rescales it for the OBJ.
   UV_map picture_uvmap = uvmap;
-  if(options.normalize)
+  if(options.normalize || options.pack)
   {
     if(!options.svg.empty() || !options.png.empty())
     {
@@ -929,8 +981,27 @@ int run(const Options& options)
       for(halfedge_descriptor h : halfedges(mesh))
         put(picture_uvmap, h, get(uvmap, h));
     }
-    normalize_uv_map(mesh, uvmap);
-    report.normalized = true;
+    // several charts: packed, or a uniform scale could leave them overlapping
+    if(options.pack || res.charts > 1)
+    {
+      namespace SMSO_np = SMSO::parameters;
+      const SMSO::Chart_packing_result packing = SMSO::pack_charts(
+        mesh, uvmap, SMSO_np::combine(SMSO_np::texture_size(options.texture_size), SMSO_np::margin(options.margin)));
+      if(!packing.has_result())
+      {
+        report.status = SMSO::get_error_code_name(packing.status);
+        report.message = "cannot pack the charts: " + packing.message;
+        print_error(report.message);
+        return finish(options, report, t0, EXIT_RUN_FAILED);
+      }
+      report.packed = true;
+      report.texture_size = options.texture_size;
+      report.margin = options.margin;
+      report.fill_rate = packing.fill_rate;
+    }
+    else
+      normalize_uv_map(mesh, uvmap);
+    report.normalized = options.normalize;
   }
 
   report.output = output_path(options);

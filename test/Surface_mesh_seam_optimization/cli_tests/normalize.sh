@@ -1,7 +1,8 @@
 #!/bin/bash
 # --normalize: the written UVs lie in [0,1]^2 with a longer extent of exactly
 # 1 (one scale for all charts); the report keeps the E_SD of the optimizer's
-# (unnormalized) map and says "normalized": true. With the shared evaluator
+# (unnormalized) map and says "normalized": true, "packed": false (one
+# chart: scaled, not packed; several are packed, see pack.sh). With the shared evaluator
 # beside the repository, E_SD at the optimal uniform scale of the written map
 # equals the report's e_sd, and no triangle is flipped.
 set -u
@@ -22,6 +23,8 @@ def check(cond, what):
         sys.exit("FAIL: %s" % what)
 check(r["status"] == "OK", "status is %r, not OK" % r["status"])
 check(r.get("normalized") is True, "report: normalized is %r" % r.get("normalized"))
+check(r["charts"] == 1 and r.get("packed") is False and r.get("fill_rate") is None,
+      "report: charts %r, packed %r, fill_rate %r" % (r["charts"], r.get("packed"), r.get("fill_rate")))
 check(r["e_sd"] is not None and 4.0 <= r["e_sd"] <= 4.1 + 1e-9, "e_sd %r" % r["e_sd"])
 us, vs = [], []
 for line in open(sys.argv[1]):
