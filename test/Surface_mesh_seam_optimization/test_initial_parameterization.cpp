@@ -493,18 +493,19 @@ BOOST_AUTO_TEST_CASE(errors_leave_the_maps_untouched)
   };
 
   {
-    Surface_mesh m = load<Surface_mesh>(test_data_dir + "/torus.obj");
-    Maps<Surface_mesh> maps(m);
-    BOOST_CHECK_EQUAL(SMSO::compute_initial_parameterization(m, maps.seam, maps.uv), SMSO::ERROR_NOT_A_DISK);
-    BOOST_CHECK(untouched(m, maps));
-  }
-  {
-    // sphere (its slit is chosen first) + torus: still nothing written
+    // sphere (its slit is chosen first) + torus (its handles cut) + a
+    // zero-area triangle: still nothing written
     Surface_mesh m;
     CGAL::copy_face_graph(load<Surface_mesh>(data_dir + "/sphere_f1522.obj"), m);
     CGAL::copy_face_graph(load<Surface_mesh>(test_data_dir + "/torus.obj"), m);
+    m.add_face(m.add_vertex(SC::Point_3(0, 0, 9)), m.add_vertex(SC::Point_3(1, 0, 9)),
+               m.add_vertex(SC::Point_3(2, 0, 9)));
     Maps<Surface_mesh> maps(m);
-    BOOST_CHECK_EQUAL(SMSO::compute_initial_parameterization(m, maps.seam, maps.uv), SMSO::ERROR_NOT_A_DISK);
+    std::string message;
+    BOOST_CHECK_EQUAL(SMSO::internal::initial_parameterization(m, maps.seam, maps.uv, SMSO::parameters::default_values(),
+                                                               message),
+                      SMSO::ERROR_DEGENERATE_TRIANGLE);
+    BOOST_CHECK_MESSAGE(message.find("face 5344 ") != std::string::npos, message);
     BOOST_CHECK(untouched(m, maps));
   }
   {

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
 
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -32,6 +33,7 @@
 #include <limits>
 #include <numeric>
 #include <queue>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -159,59 +161,14 @@ inline double signed_area_2(const std::array<double, 2>& a,
   return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
-} // namespace internal
-
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
-///
-/// Computes the initial UV map OptCuts starts from.
-///
-/// The seams read from `seam_map` cut `tm` into charts (faces connected
-/// across non-seam edges). Each chart that is a topological disk has its
-/// boundary mapped to a circle by arc length and its interior by Tutte's
-/// embedding (uniform weights), with CGAL's
-/// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
-/// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
-/// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
-/// of two edges sharing a vertex: at the vertex farthest from the centroid of
-/// the chart's triangle corners (the tip of a protrusion, where seams tend to
-/// end), the two edges not on one triangle that make the straightest line. On
-/// a surface with long protrusions (an octopus' tentacles), Tutte's map of that
-/// slit squeezes the protrusions until triangles have zero area in double
-/// precision: the chart is then slit along a shortest path
-/// (Dijkstra on the 3D edge lengths) between two approximately farthest
-/// vertices instead, and if that map still has a flipped or degenerate
-/// triangle, mapped with Floater's mean value coordinates on the same path. A
-/// disk whose Tutte map fails also gets mean value coordinates. The slit edges
-/// are set in `seam_map`. Every chart is then scaled so that its UV area equals
-/// its 3D area (the optimizer works at the 3D scale), and the charts are laid
-/// out on a grid, with gaps, so that no two overlap.
-///
-/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex
-///         point map (required by `Surface_mesh_parameterization`)
-/// \tparam EdgeSeamMap a model of `ReadWritePropertyMap`, `edge_descriptor -> bool`
-/// \tparam UVMap a model of `WritablePropertyMap`, `halfedge_descriptor -> Point_2`
-///         (`Point_2` of the geometric traits)
-///
-/// \param tm the mesh; not modified
-/// \param seam_map the seams; border edges of `tm` are never seams and are
-///        ignored. Written only to add the slits of closed charts.
-/// \param uvmap receives, for every halfedge `h` with a face, the UV of
-///        `target(h)` in `face(h)`
-/// \param np optional: `vertex_point_map`, `geom_traits`
-///
-/// \return `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
-/// `ERROR_NON_FINITE_COORDINATES`, `ERROR_DEGENERATE_TRIANGLE` (twice the
-/// area below 1e-12 times the longest edge squared), `ERROR_NON_MANIFOLD_MESH`
-/// (a vertex whose faces form several fans), `ERROR_NOT_A_DISK` (a chart of
-/// higher genus or with several boundary loops: cut it to a disk first),
-/// `ERROR_INITIAL_PARAMETERIZATION` (CGAL's parameterizers failed or gave a
-/// flipped or zero-area triangle with every slit and weighting tried). On any error neither `uvmap` nor `seam_map` is modified.
-template <class TriangleMesh, class EdgeSeamMap, class UVMap,
-          class NamedParameters = parameters::Default_named_parameters>
-Error_code compute_initial_parameterization(const TriangleMesh& tm,
-                                            EdgeSeamMap seam_map,
-                                            UVMap uvmap,
-                                            const NamedParameters& np = parameters::default_values())
+// compute_initial_parameterization(), with a message saying which chart
+// failed and why on ERROR_INITIAL_PARAMETERIZATION and ERROR_NOT_A_DISK.
+template <class TriangleMesh, class EdgeSeamMap, class UVMap, class NamedParameters>
+Error_code initial_parameterization(const TriangleMesh& tm,
+                                    EdgeSeamMap seam_map,
+                                    UVMap uvmap,
+                                    const NamedParameters& np,
+                                    std::string& message)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
   using CGAL::parameters::choose_parameter;
@@ -245,13 +202,19 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
   {
     const halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm), h2 = next(h1, tm);
     if(next(h2, tm) != h0 || h1 == h0 || h2 == h0)
+    {
+      message = "face " + std::to_string(H.size() / 3) + " (numbered from 0) is not a triangle";
       return ERROR_NON_TRIANGULAR_MESH;
+    }
     H.push_back(h0); H.push_back(h1); H.push_back(h2);
   }
   const int nc = static_cast<int>(H.size());
   const int nf = nc / 3;
   if(nf == 0)
+  {
+    message = "the mesh has no face";
     return ERROR_EMPTY_MESH;
+  }
 
   std::vector<XYZ> P(nv);
   for(vertex_descriptor v : vertices(tm))
@@ -292,7 +255,10 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]); };
     const double lmax2 = (std::max)({ sq(a, b), sq(b, c), sq(c, a) });
     if(!(twice_area > internal::degenerate_triangle_threshold() * lmax2))
+    {
+      message = "face " + std::to_string(f) + " (numbered from 0) has a (numerically) zero area";
       return ERROR_DEGENERATE_TRIANGLE;
+    }
     area3[f] = 0.5 * twice_area;
   }
 
@@ -309,7 +275,11 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     {
       const int r = fans.find(c);
       if(fan_of[cv[c]] < 0) fan_of[cv[c]] = r;
-      else if(fan_of[cv[c]] != r) return ERROR_NON_MANIFOLD_MESH;
+      else if(fan_of[cv[c]] != r)
+      {
+        message = "vertex " + std::to_string(cv[c]) + " (numbered from 0) is not manifold: its faces form several fans";
+        return ERROR_NON_MANIFOLD_MESH;
+      }
     }
   }
 
@@ -348,6 +318,8 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     for(int k = 0; k < n_charts; ++k)
       chi[k] -= (3 * faces_in[k] + border_sides[k]) / 2;
   }
+  std::vector<std::vector<int> > loop_sides;  // every boundary loop, sides in walk order
+  std::vector<int> loop_chart;
   {
     // The boundary of the cut surface runs against the cut sides: after the
     // side of H[c], continue at the first cut side met turning around source(H[c]).
@@ -356,10 +328,13 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     {
       if(!cut[c0] || seen[c0]) continue;
       ++loops[chart_of_face[c0 / 3]];
+      loop_sides.emplace_back();
+      loop_chart.push_back(chart_of_face[c0 / 3]);
       int c = c0;
       while(!seen[c])
       {
         seen[c] = 1;
+        loop_sides.back().push_back(c);
         int g = prev_c(c);
         for(int guard = 0; !cut[g]; ++guard)
         {
@@ -380,16 +355,30 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     for(int f = 0; f < nf; ++f) chart_faces[fill[chart_of_face[f]]++] = f;
   }
 
-  // ---- closed genus-0 charts get a slit; anything else but a disk is refused
-  std::vector<char> closed(n_charts, 0);
+  // ---- closed genus-0 charts get a slit; other charts that are not disks
+  // (handles, several boundary loops) a cut graph through their handles
+  std::vector<char> closed(n_charts, 0), general(n_charts, 0);
   for(int k = 0; k < n_charts; ++k)
   {
     if(loops[k] == 1 && chi[k] == 1)
       continue;
-    if(!(loops[k] == 0 && chi[k] == 2))
+    if(loops[k] == 0 && chi[k] == 2)
+      closed[k] = 1;
+    else if((2 - chi[k] - loops[k]) % 2 != 0 || 2 - chi[k] - loops[k] < 0)
+    {
+      message = "chart " + std::to_string(k) + " has an impossible Euler characteristic " +
+                std::to_string(chi[k]) + " with " + std::to_string(loops[k]) + " boundary loops";
       return ERROR_NOT_A_DISK;
-    closed[k] = 1;
+    }
+    else
+      general[k] = 1;
   }
+  auto describe_chart = [&](int k) -> std::string
+  {
+    return "chart " + std::to_string(k) + " (faces connected across non-seam edges, " +
+           std::to_string(chart_face_start[k + 1] - chart_face_start[k]) + " faces, genus " +
+           std::to_string((2 - chi[k] - loops[k]) / 2) + ", " + std::to_string(loops[k]) + " boundary loops)";
+  };
 
   auto side_length = [&](int c) -> double
   {
@@ -613,17 +602,13 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
   // walked along the border loop) so that faces keep their 3D orientation,
   // scales it so that its UV area equals its 3D area, and checks that every
   // triangle has a positive area.
-  auto accept_chart = [&](Seam_mesh& smesh, int k) -> bool
+  auto finish_chart = [&](int k) -> bool
   {
     const double inf = std::numeric_limits<double>::infinity();
     for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
       for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
-      {
-        const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
-        uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
         if(!std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1]))
           return false;
-      }
     double area_uv = 0, area_3d = 0;
     for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
     {
@@ -656,12 +641,78 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
     }
     return true;
   };
+  auto accept_chart = [&](Seam_mesh& smesh, int k) -> bool
+  {
+    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+      {
+        const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
+        uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+      }
+    return finish_chart(k);
+  };
 
+  // ---- charts with handles or several boundary loops: cut graph, filled-hole Tutte
+  std::vector<edge_descriptor> slit_edges;
   std::vector<char> pending(n_charts, 1);
+  {
+    std::vector<int> uv_class(nc);
+    for(int c = 0; c < nc; ++c) uv_class[c] = uv_uf.find(c);
+    std::vector<char> handle_slit(nc, 0);
+    for(int k = 0; k < n_charts; ++k)
+    {
+      if(!general[k]) continue;
+      pending[k] = 0;
+      const std::vector<int> faces_k(chart_faces.begin() + chart_face_start[k],
+                                     chart_faces.begin() + chart_face_start[k + 1]);
+      internal::Flat_chart ch;
+      ch.faces = &faces_k;
+      ch.cls = &uv_class;
+      ch.copp = &copp;
+      ch.cut = &cut;
+      ch.side_length = side_length;
+      ch.point = [&](int c) { return P[cv[c]]; };
+      double longest = -1;
+      for(std::size_t i = 0; i < loop_sides.size(); ++i)
+      {
+        if(loop_chart[i] != k) continue;
+        double length = 0;
+        for(int s : loop_sides[i]) length += side_length(s);
+        if(length > longest) { longest = length; ch.outer = static_cast<int>(ch.loops.size()); }
+        ch.loops.push_back(loop_sides[i]);
+      }
+      const int genus = (2 - chi[k] - loops[k]) / 2;
+      std::vector<int> real_sides, border_sides;
+      if(genus > 0)
+      {
+        double length = 0;
+        if(!internal::Handle_cut(ch, genus).compute(real_sides, border_sides, length))
+        {
+          message = describe_chart(k) + ": no cut graph through its handles was found";
+          return ERROR_INITIAL_PARAMETERIZATION;
+        }
+      }
+      for(int s : real_sides) handle_slit[s] = handle_slit[copp[s]] = 1;
+      bool ok = false;
+      for(int attempt = 0; attempt < 2 && !ok; ++attempt)
+        ok = internal::map_filled_chart(ch, handle_slit, border_sides, attempt == 1, uv) && finish_chart(k);
+      if(!ok)
+      {
+        message = describe_chart(k) + ": its Tutte and mean value maps, cut to a disk through " +
+                  std::to_string(real_sides.size()) + " edges, have flipped or degenerate triangles";
+        return ERROR_INITIAL_PARAMETERIZATION;
+      }
+      for(int s : real_sides) slit_edges.push_back(edge(H[s], tm));
+    }
+  }
+
   for(int k = 0; k < n_charts; ++k)
-    if(!prepare(k))
+    if(pending[k] && !prepare(k))
+    {
+      message = describe_chart(k) + ": no slit was found";
       return ERROR_INITIAL_PARAMETERIZATION;
-  for(bool any = true; any; )
+    }
+  for(bool any = std::find(pending.begin(), pending.end(), 1) != pending.end(); any; )
   {
     std::fill(slit.begin(), slit.end(), 0);
     for(int k = 0; k < n_charts; ++k)
@@ -675,7 +726,10 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
       if(!pending[k]) continue;
       const auto bhd = maker.border_halfedge(face(H[3 * first_face[k]], tm));
       if(bhd == typename boost::graph_traits<Seam_mesh>::halfedge_descriptor())
+      {
+        message = describe_chart(k) + ": no border was found";
         return ERROR_INITIAL_PARAMETERIZATION;
+      }
       const SMP::Error_code status = uses_mean_value(k, attempt[k])
         ? SMP::parameterize(smesh, Mean_value(vpm, Border(vpm)), bhd, seam_uv)
         : SMP::parameterize(smesh, Tutte(Border(vpm)), bhd, seam_uv);
@@ -686,11 +740,13 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
       }
       ++attempt[k];
       if(!prepare(k))
+      {
+        message = describe_chart(k) + ": its Tutte and mean value maps have flipped or degenerate triangles";
         return ERROR_INITIAL_PARAMETERIZATION;
+      }
       any = true;
     }
   }
-  std::vector<edge_descriptor> slit_edges;
   for(int k = 0; k < n_charts; ++k)
     for(int s : slit_sides[k])
       slit_edges.push_back(edge(H[s], tm));
@@ -722,6 +778,77 @@ Error_code compute_initial_parameterization(const TriangleMesh& tm,
   for(edge_descriptor e : slit_edges)
     put(seam_map, e, true);
   return OK;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationRef
+///
+/// Computes the initial UV map OptCuts starts from.
+///
+/// The seams read from `seam_map` cut `tm` into charts (faces connected
+/// across non-seam edges). Each chart that is a topological disk has its
+/// boundary mapped to a circle by arc length and its interior by Tutte's
+/// embedding (uniform weights), with CGAL's
+/// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
+/// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
+/// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
+/// of two edges sharing a vertex: at the vertex farthest from the centroid of
+/// the chart's triangle corners (the tip of a protrusion, where seams tend to
+/// end), the two edges not on one triangle that make the straightest line. On
+/// a surface with long protrusions (an octopus' tentacles), Tutte's map of that
+/// slit squeezes the protrusions until triangles have zero area in double
+/// precision: the chart is then slit along a shortest path
+/// (Dijkstra on the 3D edge lengths) between two approximately farthest
+/// vertices instead, and if that map still has a flipped or degenerate
+/// triangle, mapped with Floater's mean value coordinates on the same path. A
+/// disk whose Tutte map fails also gets mean value coordinates.
+///
+/// Any other chart (handles, several boundary loops) is cut through its
+/// handles by a greedy system of loops (Erickson and Whittlesey 2005: a
+/// shortest-path tree from a root, the dual spanning tree of the other edges
+/// taking the longest loops first, and the 2g loops closed by the edges left
+/// over). The root is the chart's longest boundary loop, collapsed to a point,
+/// or on a closed chart the best of a few vertices spread over it. Inner
+/// boundary loops stay holes: no seam joins them; the map (Tutte, else mean
+/// value coordinates) is computed with each hole filled by a fan around a
+/// virtual vertex, whose faces are then dropped, and the loops avoid the
+/// holes' vertices so that no hole touches the chart's border.
+///
+/// The slit and cut edges are set in `seam_map`. Every chart is then scaled so that its UV area equals
+/// its 3D area (the optimizer works at the 3D scale), and the charts are laid
+/// out on a grid, with gaps, so that no two overlap.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex
+///         point map (required by `Surface_mesh_parameterization`)
+/// \tparam EdgeSeamMap a model of `ReadWritePropertyMap`, `edge_descriptor -> bool`
+/// \tparam UVMap a model of `WritablePropertyMap`, `halfedge_descriptor -> Point_2`
+///         (`Point_2` of the geometric traits)
+///
+/// \param tm the mesh; not modified
+/// \param seam_map the seams; border edges of `tm` are never seams and are
+///        ignored. Written only to add the slits of closed charts and the cuts through handles.
+/// \param uvmap receives, for every halfedge `h` with a face, the UV of
+///        `target(h)` in `face(h)`
+/// \param np optional: `vertex_point_map`, `geom_traits`
+///
+/// \return `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
+/// `ERROR_NON_FINITE_COORDINATES`, `ERROR_DEGENERATE_TRIANGLE` (twice the
+/// area below 1e-12 times the longest edge squared), `ERROR_NON_MANIFOLD_MESH`
+/// (a vertex whose faces form several fans), `ERROR_NOT_A_DISK` (a chart
+/// whose Euler characteristic and boundary loops fit no orientable surface),
+/// `ERROR_INITIAL_PARAMETERIZATION` (CGAL's parameterizers failed or gave a
+/// flipped or zero-area triangle with every slit and weighting tried; the
+/// optimizers' message names the chart, its genus and its boundary loops). On any error neither `uvmap` nor `seam_map` is modified.
+template <class TriangleMesh, class EdgeSeamMap, class UVMap,
+          class NamedParameters = parameters::Default_named_parameters>
+Error_code compute_initial_parameterization(const TriangleMesh& tm,
+                                            EdgeSeamMap seam_map,
+                                            UVMap uvmap,
+                                            const NamedParameters& np = parameters::default_values())
+{
+  std::string message;
+  return internal::initial_parameterization(tm, seam_map, uvmap, np, message);
 }
 
 } // namespace Surface_mesh_seam_optimization
