@@ -116,38 +116,45 @@ public:
   }
 
 private:
+  static bool contains(const Pack_rect& b, const Pack_rect& a)
+  {
+    return a.x >= b.x && a.y >= b.y && a.x + a.w <= b.x + b.w && a.y + a.h <= b.y + b.h;
+  }
+
   void split(const Pack_rect& p)
   {
-    std::vector<Pack_rect> next;
-    next.reserve(m_free.size() + 4);
+    // Free rectangles away from p stay (none contains another); the pieces
+    // of those it cuts are checked against all, so each step is linear.
+    std::vector<Pack_rect> kept, pieces;
+    kept.reserve(m_free.size());
     for(const Pack_rect& f : m_free)
     {
       if(!(p.x < f.x + f.w && p.x + p.w > f.x && p.y < f.y + f.h && p.y + p.h > f.y))
       {
-        next.push_back(f);
+        kept.push_back(f);
         continue;
       }
-      if(p.x > f.x) next.push_back(Pack_rect{f.x, f.y, p.x - f.x, f.h});
-      if(p.x + p.w < f.x + f.w) next.push_back(Pack_rect{p.x + p.w, f.y, f.x + f.w - (p.x + p.w), f.h});
-      if(p.y > f.y) next.push_back(Pack_rect{f.x, f.y, f.w, p.y - f.y});
-      if(p.y + p.h < f.y + f.h) next.push_back(Pack_rect{f.x, p.y + p.h, f.w, f.y + f.h - (p.y + p.h)});
+      if(p.x > f.x) pieces.push_back(Pack_rect{f.x, f.y, p.x - f.x, f.h});
+      if(p.x + p.w < f.x + f.w) pieces.push_back(Pack_rect{p.x + p.w, f.y, f.x + f.w - (p.x + p.w), f.h});
+      if(p.y > f.y) pieces.push_back(Pack_rect{f.x, f.y, f.w, p.y - f.y});
+      if(p.y + p.h < f.y + f.h) pieces.push_back(Pack_rect{f.x, p.y + p.h, f.w, f.y + f.h - (p.y + p.h)});
     }
-    // drop the rectangles contained in another one (keep one of two equal ones)
-    m_free.clear();
-    for(std::size_t i = 0; i < next.size(); ++i)
+    // a piece inside a kept rectangle or inside another piece (of two equal, the first stays) is dropped
+    std::vector<char> drop(pieces.size(), 0);
+    for(std::size_t i = 0; i < pieces.size(); ++i)
     {
-      const Pack_rect& a = next[i];
-      bool contained = false;
-      for(std::size_t j = 0; j < next.size() && !contained; ++j)
-      {
-        if(i == j) continue;
-        const Pack_rect& b = next[j];
-        const bool inside = a.x >= b.x && a.y >= b.y && a.x + a.w <= b.x + b.w && a.y + a.h <= b.y + b.h;
-        const bool equal = a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
-        contained = inside && (!equal || j < i);
-      }
-      if(!contained) m_free.push_back(a);
+      for(const Pack_rect& k : kept)
+        if(contains(k, pieces[i])) { drop[i] = 1; break; }
+      for(std::size_t j = 0; j < pieces.size() && !drop[i]; ++j)
+        if(j != i && contains(pieces[j], pieces[i]) && (!contains(pieces[i], pieces[j]) || j < i))
+          drop[i] = 1;
     }
+    m_free.clear();
+    // a piece never contains a kept rectangle: both lie in the free space, the
+    // kept one away from p, the piece beside p within a rectangle it cut
+    for(const Pack_rect& k : kept) m_free.push_back(k);
+    for(std::size_t i = 0; i < pieces.size(); ++i)
+      if(!drop[i]) m_free.push_back(pieces[i]);
   }
 
   std::vector<Pack_rect> m_free;
@@ -317,7 +324,7 @@ inline Error_code pack_cut_mesh(Cut_mesh& cm, const Packing_settings& settings,
   double lo = 0, hi = (N - m) / std::sqrt(sum_rect_area);
   Layout layout;
   if(try_pack(hi, layout)) { lo = hi; best = layout; }
-  for(int it = 0; it < 60 && hi - lo > 1e-12 * hi; ++it)
+  for(int it = 0; it < 60 && hi - lo > 1e-6 * hi; ++it)   // the fill rate to ~2e-6
   {
     const double mid = 0.5 * (lo + hi);
     if(try_pack(mid, layout)) { lo = mid; best = layout; }
