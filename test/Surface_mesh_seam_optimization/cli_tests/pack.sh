@@ -4,13 +4,15 @@
 # the charts' bounding boxes are at least margin texels apart, the report
 # says "packed": true with the texture size, margin and fill rate; the E_SD
 # at the optimal uniform scale is the report's (charts moved rigidly, one
-# scale), no overlap (shared evaluator, when present). --normalize packs
+# scale), no overlap (shared evaluator, when present). The same on
+# multiComp.obj (six components, 6 charts). --normalize packs
 # too with several charts. Usage errors exit 2, a margin too large for the
 # charts exits 1 with no OBJ written. Fill rates measured: 0.566 (512
 # texels, margin 4), 0.580 (1024); the threshold 0.45 leaves room for the
 # optimizer to find other seams (other chart shapes).
 set -u
 BIN=$1 DATA=$2 SCRATCH=$3
+MULTI="$(cd "$(dirname "$0")/../data/general" && pwd)/multiComp.obj"
 mkdir -p "$SCRATCH" && cd "$SCRATCH" || exit 1
 rm -f ./*
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -108,6 +110,16 @@ check_obj p.obj p.json 512 4 || fail "--pack output not as expected"
 python3 -c "import json,sys; r=json.load(open('p.json')); sys.exit(0 if r['normalized'] is False else 1)" ||
   fail "--pack alone: normalized should be false"
 check_uvmetrics p.obj p.json
+
+# six components of any genus (multiComp.obj, cut into disks by the initial
+# map): 6 charts packed, bijective (measured fill rate 0.662, 2048 texels, margin 2)
+"$BIN" "$MULTI" --seam-weight 0.3 --pack --texture-size 2048 --margin 2 -o m6.obj --report m6.json >out.txt 2>err.txt
+rc=$?
+[ "$rc" -eq 0 ] || fail "multiComp --pack: exit code $rc (stderr: $(cat err.txt))"
+check_obj m6.obj m6.json 2048 2 || fail "multiComp --pack output not as expected"
+python3 -c "import json,sys; r=json.load(open('m6.json')); sys.exit(0 if r['charts'] == 6 and r['overlapping_triangle_pairs'] == 0 else 1)" ||
+  fail "multiComp: charts or overlaps: $(cat m6.json)"
+check_uvmetrics m6.obj m6.json
 
 # --normalize with several charts packs, with the default texture and margin
 "$BIN" two.obj --recut-rounds 0 --normalize -o n.obj --report n.json >out.txt 2>err.txt
