@@ -765,6 +765,11 @@ BOOST_AUTO_TEST_CASE(pack_charts_rejects_invalid_input_and_leaves_the_map_untouc
   BOOST_TEST(std::isnan(get(uv, h).x()));
   put(uv, h, kept);
   BOOST_TEST((uv_values(sm, uv) == original));
+  // a map of zero extent: no scale fits it; with equal_texel_density, no density either
+  Uv_map zero = sm.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:zero", Point_2(0., 0.)).first;
+  BOOST_TEST(SMSO::pack_charts(sm, zero).status == SMSO::ERROR_INVALID_UV_MAP);
+  BOOST_TEST(SMSO::pack_charts(sm, zero, SMSO_np::equal_texel_density(true)).status == SMSO::ERROR_FLIPPED_UV_TRIANGLE);
+  BOOST_TEST((uv_values(sm, zero) == std::vector<Point_2>(num_halfedges(sm), Point_2(0., 0.))));
   Surface_mesh empty;
   auto uv_empty = empty.add_property_map<Surface_mesh::Halfedge_index, Point_2>("h:uv").first;
   BOOST_TEST(SMSO::pack_charts(empty, uv_empty).status == SMSO::ERROR_EMPTY_MESH);

@@ -425,7 +425,8 @@ inline Error_code pack_cut_mesh(Cut_mesh& cm, const Packing_settings& settings,
 /// \cgalNamedParamsEnd
 ///
 /// \return the status (`ERROR_EMPTY_MESH` and the other mesh errors, `ERROR_INVALID_UV_MAP` for a
-///   non-finite UV or a map of zero extent, `ERROR_WRONG_PARAMETER` for a texture size below 1, a
+///   non-finite UV or a map of zero extent, `ERROR_FLIPPED_UV_TRIANGLE` with `equal_texel_density` for a
+///   chart without positive UV area, `ERROR_WRONG_PARAMETER` for a texture size below 1, a
 ///   negative margin or one so large that the charts do not fit), the number of charts, the scale
 ///   factor, the fill rate (the charts' share of the texture's area) and the texel density.
 template <typename TriangleMesh, typename UVMap,
