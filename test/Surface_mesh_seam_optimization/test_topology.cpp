@@ -310,6 +310,47 @@ BOOST_AUTO_TEST_CASE(torus_is_cut_along_a_meridian_and_a_parallel)
   BOOST_TEST(out.genus[0] == 0);
 }
 
+// Genus 3 with 106 holes: the handle loops cannot avoid the holes, and the
+// single chart's maps shrink below double precision (UV vertices coincide).
+// The chart is split into geodesic Voronoi regions until every piece maps:
+// no flip, no overlap, no two vertices at one point, every chart planar, and
+// a bijective optimization can start from it (its scaffold meshes).
+BOOST_AUTO_TEST_CASE(a_chart_that_cannot_be_mapped_whole_is_split)
+{
+  Mesh m = load("elephant-with-holes.off");
+  const Surface_topology in = mesh_topology(m);
+  BOOST_TEST(in.genus[0] == 3);
+  BOOST_TEST(in.loops[0] == 106);
+  auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  auto seam = m.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  BOOST_TEST_REQUIRE(SMSO::compute_initial_parameterization(m, seam, uv) == SMSO::OK);
+  std::size_t flipped = 0;
+  recomputed_distortion(m, uv, flipped);
+  BOOST_TEST(flipped == 0u);
+  BOOST_TEST(seam_mismatches(m, uv, seam) == 0u);
+  const Surface_topology out = uv_topology(m, uv);
+  BOOST_TEST(out.components > 1);
+  for(int k = 0; k < out.components; ++k) BOOST_TEST(out.genus[k] == 0);
+  BOOST_TEST(SMSO::measure_uv_map(m, uv).overlapping_triangle_pairs == 0u);
+  std::map<std::pair<double, double>, vertex_descriptor> at;
+  std::size_t coincident = 0;
+  for(halfedge_descriptor h : halfedges(m))
+  {
+    if(is_border(h, m)) continue;
+    const auto it = at.emplace(std::make_pair(get(uv, h).x(), get(uv, h).y()), target(h, m)).first;
+    coincident += it->second != target(h, m) ? 1 : 0;
+  }
+  BOOST_TEST(coincident == 0u);
+
+  auto uv2 = m.add_property_map<halfedge_descriptor, Point_2>("h:uv2").first;
+  const SMSO::Optimization_result r =
+    SMSO::optimize_seams(m, uv2, SMSO_np::maximum_number_of_iterations(30));
+  BOOST_TEST(r.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
+  BOOST_TEST(r.overlapping_triangle_pairs == 0u);
+  recomputed_distortion(m, uv2, flipped);
+  BOOST_TEST(flipped == 0u);
+}
+
 // The shared benchmark's high_genus/, multi_component/ and edge_cases/ meshes.
 BOOST_AUTO_TEST_CASE(shared_meshes_meet_the_bound)
 {

@@ -229,13 +229,13 @@ Error_code initial_parameterization(const TriangleMesh& tm,
   std::vector<int> corner_of(nh, -1), cv(nc), copp(nc);
   for(int c = 0; c < nc; ++c)
     corner_of[get(himap, H[c])] = c;
-  std::vector<char> cut(nc, 0); // the edge of H[c] separates charts (or is a border)
+  std::vector<char> base_cut(nc, 0); // the edge of H[c] separates charts (or is a border)
   for(int c = 0; c < nc; ++c)
   {
     cv[c] = static_cast<int>(get(vimap, target(H[c], tm)));
     const halfedge_descriptor o = opposite(H[c], tm);
     copp[c] = corner_of[get(himap, o)];
-    cut[c] = (copp[c] < 0 || get(seam_map, edge(H[c], tm))) ? 1 : 0;
+    base_cut[c] = (copp[c] < 0 || get(seam_map, edge(H[c], tm))) ? 1 : 0;
   }
   auto next_c = [](int c) { return c - c % 3 + (c + 1) % 3; };
   auto prev_c = [](int c) { return c - c % 3 + (c + 2) % 3; };
@@ -283,103 +283,6 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     }
   }
 
-  // ---- charts (faces across non-cut edges) and UV vertices (corners across non-cut edges)
-  internal::Union_find chart_uf(nf), uv_uf(nc);
-  for(int c = 0; c < nc; ++c)
-  {
-    if(!cut[c]) chart_uf.unite(c / 3, copp[c] / 3);
-    const int n = next_c(c);
-    if(!cut[n]) uv_uf.unite(c, copp[n]);
-  }
-  std::vector<int> chart_of_face(nf), chart_face(nf, -1);
-  int n_charts = 0;
-  for(int f = 0; f < nf; ++f)
-  {
-    const int r = chart_uf.find(f);
-    if(chart_face[r] < 0) chart_face[r] = n_charts++;
-    chart_of_face[f] = chart_face[r];
-  }
-  std::vector<int> first_face(n_charts, -1);
-  for(int f = nf - 1; f >= 0; --f) first_face[chart_of_face[f]] = f;
-
-  // Euler characteristic V - E + F of each chart's cut surface, and its boundary loops.
-  std::vector<long> chi(n_charts, 0), border_sides(n_charts, 0);
-  std::vector<int> loops(n_charts, 0);
-  for(int f = 0; f < nf; ++f) chi[chart_of_face[f]] += 1;
-  for(int c = 0; c < nc; ++c)
-  {
-    if(uv_uf.find(c) == c) chi[chart_of_face[c / 3]] += 1;
-    if(cut[c]) border_sides[chart_of_face[c / 3]] += 1;
-  }
-  {
-    // E: every face has 3 sides, an uncut edge two of them, a cut side is an edge alone.
-    std::vector<long> faces_in(n_charts, 0);
-    for(int f = 0; f < nf; ++f) faces_in[chart_of_face[f]] += 1;
-    for(int k = 0; k < n_charts; ++k)
-      chi[k] -= (3 * faces_in[k] + border_sides[k]) / 2;
-  }
-  std::vector<std::vector<int> > loop_sides;  // every boundary loop, sides in walk order
-  std::vector<int> loop_chart;
-  {
-    // The boundary of the cut surface runs against the cut sides: after the
-    // side of H[c], continue at the first cut side met turning around source(H[c]).
-    std::vector<char> seen(nc, 0);
-    for(int c0 = 0; c0 < nc; ++c0)
-    {
-      if(!cut[c0] || seen[c0]) continue;
-      ++loops[chart_of_face[c0 / 3]];
-      loop_sides.emplace_back();
-      loop_chart.push_back(chart_of_face[c0 / 3]);
-      int c = c0;
-      while(!seen[c])
-      {
-        seen[c] = 1;
-        loop_sides.back().push_back(c);
-        int g = prev_c(c);
-        for(int guard = 0; !cut[g]; ++guard)
-        {
-          if(guard > nc) return ERROR_NON_MANIFOLD_MESH;
-          g = prev_c(copp[g]);
-        }
-        c = g;
-      }
-    }
-  }
-
-  // ---- faces of each chart, in face order
-  std::vector<int> chart_face_start(n_charts + 1, 0), chart_faces(nf);
-  for(int f = 0; f < nf; ++f) ++chart_face_start[chart_of_face[f] + 1];
-  for(int k = 0; k < n_charts; ++k) chart_face_start[k + 1] += chart_face_start[k];
-  {
-    std::vector<int> fill(chart_face_start.begin(), chart_face_start.end() - 1);
-    for(int f = 0; f < nf; ++f) chart_faces[fill[chart_of_face[f]]++] = f;
-  }
-
-  // ---- closed genus-0 charts get a slit; other charts that are not disks
-  // (handles, several boundary loops) a cut graph through their handles
-  std::vector<char> closed(n_charts, 0), general(n_charts, 0);
-  for(int k = 0; k < n_charts; ++k)
-  {
-    if(loops[k] == 1 && chi[k] == 1)
-      continue;
-    if(loops[k] == 0 && chi[k] == 2)
-      closed[k] = 1;
-    else if((2 - chi[k] - loops[k]) % 2 != 0 || 2 - chi[k] - loops[k] < 0)
-    {
-      message = "chart " + std::to_string(k) + " has an impossible Euler characteristic " +
-                std::to_string(chi[k]) + " with " + std::to_string(loops[k]) + " boundary loops";
-      return ERROR_NOT_A_DISK;
-    }
-    else
-      general[k] = 1;
-  }
-  auto describe_chart = [&](int k) -> std::string
-  {
-    return "chart " + std::to_string(k) + " (faces connected across non-seam edges, " +
-           std::to_string(chart_face_start[k + 1] - chart_face_start[k]) + " faces, genus " +
-           std::to_string((2 - chi[k] - loops[k]) / 2) + ", " + std::to_string(loops[k]) + " boundary loops)";
-  };
-
   auto side_length = [&](int c) -> double
   {
     const XYZ& p = P[cv[c]];
@@ -388,396 +291,594 @@ Error_code initial_parameterization(const TriangleMesh& tm,
                      (p[2] - q[2]) * (p[2] - q[2]));
   };
 
-  // Ring of corner sides ending at the vertex of corner c: H[r] for
-  // r = c, prev(copp(c)), ...
-  auto ring_of = [&](int c) -> std::vector<int>
+  // Everything from the seams on, with `extra` seams beside the user's. On
+  // ERROR_INITIAL_PARAMETERIZATION, `failed` receives the faces of the chart
+  // that could not be mapped.
+  auto solve = [&](const std::vector<char>& extra, std::vector<int>& failed) -> Error_code
   {
-    std::vector<int> ring;
-    int r = c;
-    do { ring.push_back(r); r = prev_c(copp[r]); } while(r != c && ring.size() <= std::size_t(nc));
-    return ring;
-  };
-
-  // The first choice: two edges at one vertex not on a common triangle
-  // (consecutive in the ring). Returns one corner side per edge.
-  auto two_edge_slit = [&](int k) -> std::vector<int>
-  {
-    double best = std::numeric_limits<double>::infinity();
-    int best_a = -1, best_b = -1;
-    // The vertex farthest from the chart's centroid, a protrusion's tip
-    // where a seam is likely to end anyway; its straightest pair of edges.
+    std::vector<char> cut(base_cut);
+    for(int c = 0; c < nc; ++c) cut[c] = cut[c] || extra[c];
+    // ---- charts (faces across non-cut edges) and UV vertices (corners across non-cut edges)
+    internal::Union_find chart_uf(nf), uv_uf(nc);
+    for(int c = 0; c < nc; ++c)
     {
-      const int* faces_begin = chart_faces.data() + chart_face_start[k];
-      const int* faces_end = chart_faces.data() + chart_face_start[k + 1];
-      double centroid[3] = { 0, 0, 0 };
-      for(const int* f = faces_begin; f != faces_end; ++f)
-        for(int j = 0; j < 3; ++j)
-          for(int d = 0; d < 3; ++d) centroid[d] += P[cv[3 * *f + j]][d];
-      for(int d = 0; d < 3; ++d) centroid[d] /= 3. * double(faces_end - faces_begin);
-      int tip = -1;
-      double farthest = -1;
-      for(const int* f = faces_begin; f != faces_end; ++f)
-        for(int j = 0; j < 3; ++j)
+      if(!cut[c]) chart_uf.unite(c / 3, copp[c] / 3);
+      const int n = next_c(c);
+      if(!cut[n]) uv_uf.unite(c, copp[n]);
+    }
+    std::vector<int> chart_of_face(nf), chart_face(nf, -1);
+    int n_charts = 0;
+    for(int f = 0; f < nf; ++f)
+    {
+      const int r = chart_uf.find(f);
+      if(chart_face[r] < 0) chart_face[r] = n_charts++;
+      chart_of_face[f] = chart_face[r];
+    }
+    std::vector<int> first_face(n_charts, -1);
+    for(int f = nf - 1; f >= 0; --f) first_face[chart_of_face[f]] = f;
+
+    // Euler characteristic V - E + F of each chart's cut surface, and its boundary loops.
+    std::vector<long> chi(n_charts, 0), border_sides(n_charts, 0);
+    std::vector<int> loops(n_charts, 0);
+    for(int f = 0; f < nf; ++f) chi[chart_of_face[f]] += 1;
+    for(int c = 0; c < nc; ++c)
+    {
+      if(uv_uf.find(c) == c) chi[chart_of_face[c / 3]] += 1;
+      if(cut[c]) border_sides[chart_of_face[c / 3]] += 1;
+    }
+    {
+      // E: every face has 3 sides, an uncut edge two of them, a cut side is an edge alone.
+      std::vector<long> faces_in(n_charts, 0);
+      for(int f = 0; f < nf; ++f) faces_in[chart_of_face[f]] += 1;
+      for(int k = 0; k < n_charts; ++k)
+        chi[k] -= (3 * faces_in[k] + border_sides[k]) / 2;
+    }
+    std::vector<std::vector<int> > loop_sides;  // every boundary loop, sides in walk order
+    std::vector<int> loop_chart;
+    {
+      // The boundary of the cut surface runs against the cut sides: after the
+      // side of H[c], continue at the first cut side met turning around source(H[c]).
+      std::vector<char> seen(nc, 0);
+      for(int c0 = 0; c0 < nc; ++c0)
+      {
+        if(!cut[c0] || seen[c0]) continue;
+        ++loops[chart_of_face[c0 / 3]];
+        loop_sides.emplace_back();
+        loop_chart.push_back(chart_of_face[c0 / 3]);
+        int c = c0;
+        while(!seen[c])
         {
-          const int c = 3 * *f + j;
-          double d2 = 0;
-          for(int d = 0; d < 3; ++d) d2 += (P[cv[c]][d] - centroid[d]) * (P[cv[c]][d] - centroid[d]);
-          if(d2 > farthest) { farthest = d2; tip = c; }
-        }
-      const std::vector<int> ring = ring_of(tip);
-      const std::size_t d = ring.size();
-      const XYZ& o = P[cv[tip]];
-      double straightest = 2; // cosine of the angle between the two edges
-      for(std::size_t i = 0; i < d; ++i)
-        for(std::size_t j = i + 2; j < d; ++j)
-        {
-          if(i == 0 && j == d - 1) continue; // consecutive: on one triangle
-          const XYZ& a = P[cv[prev_c(ring[i])]];
-          const XYZ& b = P[cv[prev_c(ring[j])]];
-          double aa = 0, bb = 0, ab = 0;
-          for(int q = 0; q < 3; ++q)
+          seen[c] = 1;
+          loop_sides.back().push_back(c);
+          int g = prev_c(c);
+          for(int guard = 0; !cut[g]; ++guard)
           {
-            aa += (a[q] - o[q]) * (a[q] - o[q]);
-            bb += (b[q] - o[q]) * (b[q] - o[q]);
-            ab += (a[q] - o[q]) * (b[q] - o[q]);
+            if(guard > nc) return ERROR_NON_MANIFOLD_MESH;
+            g = prev_c(copp[g]);
           }
-          const double cosine = ab / std::sqrt(aa * bb);
-          if(cosine < straightest) { straightest = cosine; best_a = ring[i]; best_b = ring[j]; }
-        }
-      if(best_a >= 0) return std::vector<int>{ best_a, best_b };
-    }
-    // else (a tetrahedron-like ring) the shortest such pair anywhere, or any pair
-    for(int pass = 0; pass < 2 && best_a < 0; ++pass)
-    {
-      std::vector<char> vdone(nv, 0);
-      for(int c = 0; c < nc; ++c)
-      {
-        if(chart_of_face[c / 3] != k || vdone[cv[c]]) continue;
-        vdone[cv[c]] = 1;
-        const std::vector<int> ring = ring_of(c);
-        const std::size_t d = ring.size();
-        std::vector<double> len(d);
-        for(std::size_t i = 0; i < d; ++i)
-          len[i] = side_length(ring[i]);
-        for(std::size_t i = 0; i < d; ++i)
-          for(std::size_t j = i + 1; j < d; ++j)
-          {
-            const bool adjacent = (j == i + 1) || (i == 0 && j == d - 1);
-            if(pass == 0 && adjacent) continue;
-            if(len[i] + len[j] < best)
-            {
-              best = len[i] + len[j];
-              best_a = ring[i];
-              best_b = ring[j];
-            }
-          }
-      }
-    }
-    if(best_a < 0)
-      return std::vector<int>();
-    return std::vector<int>{ best_a, best_b };
-  };
-
-  // The fallbacks: shortest paths on the 3D edge lengths (Dijkstra). A closed
-  // chart is a whole connected component, so the search stays in it.
-  // H[c] runs from cv[prev_c(c)] to cv[c].
-  std::vector<int> out_start, out_side;
-  std::vector<double> dist;
-  std::vector<int> pred; // the side by which a vertex was reached, -1 at the sources
-  auto dijkstra = [&](const std::vector<int>& sources)
-  {
-    if(out_start.empty())
-    {
-      out_start.assign(nv + 1, 0);
-      out_side.resize(nc);
-      for(int c = 0; c < nc; ++c) ++out_start[cv[prev_c(c)] + 1];
-      for(std::size_t v = 0; v < nv; ++v) out_start[v + 1] += out_start[v];
-      std::vector<int> fill(out_start.begin(), out_start.end() - 1);
-      for(int c = 0; c < nc; ++c) out_side[fill[cv[prev_c(c)]]++] = c;
-    }
-    dist.assign(nv, std::numeric_limits<double>::infinity());
-    pred.assign(nv, -1);
-    typedef std::pair<double, int> Item; // ties are broken by the vertex index: deterministic
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-    for(int s : sources)
-    {
-      dist[s] = 0;
-      queue.push(Item(0., s));
-    }
-    while(!queue.empty())
-    {
-      const Item top = queue.top();
-      queue.pop();
-      const int u = top.second;
-      if(top.first > dist[u]) continue;
-      for(int i = out_start[u]; i < out_start[u + 1]; ++i)
-      {
-        const int c = out_side[i];
-        const double d = top.first + side_length(c);
-        if(d < dist[cv[c]])
-        {
-          dist[cv[c]] = d;
-          pred[cv[c]] = c;
-          queue.push(Item(d, cv[c]));
+          c = g;
         }
       }
     }
-  };
-  auto chart_vertices = [&](int k) -> std::vector<int>
-  {
-    std::vector<int> vs;
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-      for(int j = 0; j < 3; ++j) vs.push_back(cv[3 * chart_faces[i] + j]);
-    std::sort(vs.begin(), vs.end());
-    vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
-    return vs;
-  };
-  auto farthest = [&](const std::vector<int>& vs) -> int
-  {
-    int best = vs.front();
-    for(int v : vs)
-      if(dist[v] > dist[best]) best = v;
-    return best;
-  };
-  // A shortest path between two approximately farthest vertices (double
-  // sweep: the farthest vertex b from the farthest vertex a from an arbitrary
-  // one): a simple path, so the slit chart is a disk.
-  auto path_slit = [&](int k) -> std::vector<int>
-  {
-    const std::vector<int> vs = chart_vertices(k);
-    dijkstra(std::vector<int>(1, cv[3 * first_face[k]]));
-    const int a = farthest(vs);
-    dijkstra(std::vector<int>(1, a));
-    std::vector<int> sides;
-    for(int v = farthest(vs); pred[v] >= 0; v = cv[prev_c(pred[v])])
-      sides.push_back(pred[v]);
-    if(sides.size() < 2) // a single edge is no slit a circle can be put on
-      sides.clear();
-    return sides;
-  };
 
-  // Attempts, in order, until the chart's map has no flipped or degenerate triangle:
-  // closed charts: two-edge slit + Tutte, path + Tutte, path + mean value coordinates;
-  // disks: Tutte, mean value coordinates.
-  auto n_attempts = [&](int k) { return closed[k] ? 3 : 2; };
-  auto uses_mean_value = [&](int k, int a) { return closed[k] ? a == 2 : a == 1; };
-  std::vector<int> attempt(n_charts, 0);
-  std::vector<std::vector<int> > slit_sides(n_charts);
-  // Sets the slit of attempt[k], skipping attempts whose slit does not exist.
-  auto prepare = [&](int k) -> bool
-  {
-    for(; attempt[k] < n_attempts(k); ++attempt[k])
+    // ---- faces of each chart, in face order
+    std::vector<int> chart_face_start(n_charts + 1, 0), chart_faces(nf);
+    for(int f = 0; f < nf; ++f) ++chart_face_start[chart_of_face[f] + 1];
+    for(int k = 0; k < n_charts; ++k) chart_face_start[k + 1] += chart_face_start[k];
     {
-      if(!closed[k]) return true;
-      if(attempt[k] == 0) slit_sides[k] = two_edge_slit(k);
-      else if(attempt[k] == 1) slit_sides[k] = path_slit(k);
-      else if(slit_sides[k].empty()) continue; // no path for mean value coordinates either
-      if(!slit_sides[k].empty()) return true;
+      std::vector<int> fill(chart_face_start.begin(), chart_face_start.end() - 1);
+      for(int f = 0; f < nf; ++f) chart_faces[fill[chart_of_face[f]]++] = f;
     }
-    return false;
-  };
 
-  // ---- Tutte (or mean value coordinates) on a Seam_mesh of the charts
-  std::vector<char> slit(nc, 0); // corner sides cut by a slit
-  const auto is_cut_edge = [&](edge_descriptor e) -> bool
-  {
-    const int c = corner_of[get(himap, halfedge(e, tm))];
-    const int c2 = corner_of[get(himap, opposite(halfedge(e, tm), tm))];
-    const int s = c >= 0 ? c : c2;
-    return s >= 0 && (cut[s] || slit[s]);
-  };
-  typedef Seam_mesh_maker<TriangleMesh>                                        Maker;
-  typedef typename Maker::Seam_mesh                                            Seam_mesh;
-  typedef typename SMP::internal::Kernel_traits<Seam_mesh>::Kernel::Point_2   SMP_point_2;
-  typedef internal::Circular_border_arc_length_with_point_map<Seam_mesh, VPM>  Border;
-  typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>          Tutte;
-  typedef internal::Mean_value_coordinates_with_point_map<Seam_mesh, VPM, Border> Mean_value;
-
-  std::vector<SMP_point_2> seam_uv_data(nh);
-  const auto seam_uv = boost::make_iterator_property_map(seam_uv_data.begin(), himap);
-  std::vector<UV> uv(nc);
-  std::vector<UV> lo(n_charts), hi(n_charts);
-
-  // Reads chart k back from the seam mesh, mirrors it if needed (the circle is
-  // walked along the border loop) so that faces keep their 3D orientation,
-  // scales it so that its UV area equals its 3D area, and checks that every
-  // triangle has a positive area.
-  auto finish_chart = [&](int k) -> bool
-  {
-    const double inf = std::numeric_limits<double>::infinity();
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
-        if(!std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1]))
-          return false;
-    double area_uv = 0, area_3d = 0;
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-    {
-      const int f = chart_faces[i];
-      area_uv += internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]);
-      area_3d += area3[f];
-    }
-    if(!(area_uv != 0) || !std::isfinite(area_uv))
-      return false;
-    const double s = std::sqrt(area_3d / std::abs(area_uv));
-    const double sx = area_uv < 0 ? -s : s, sy = s;
-    lo[k] = UV{{ inf, inf }};
-    hi[k] = UV{{ -inf, -inf }};
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
-      {
-        uv[c][0] *= sx;
-        uv[c][1] *= sy;
-        for(int j = 0; j < 2; ++j)
-        {
-          lo[k][j] = (std::min)(lo[k][j], uv[c][j]);
-          hi[k][j] = (std::max)(hi[k][j], uv[c][j]);
-        }
-      }
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-    {
-      const int f = chart_faces[i];
-      if(!(internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]) > 0))
-        return false;
-    }
-    return true;
-  };
-  auto accept_chart = [&](Seam_mesh& smesh, int k) -> bool
-  {
-    for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
-      for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
-      {
-        const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
-        uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
-      }
-    return finish_chart(k);
-  };
-
-  // ---- charts with handles or several boundary loops: cut graph, filled-hole Tutte
-  std::vector<edge_descriptor> slit_edges;
-  std::vector<char> pending(n_charts, 1);
-  {
-    std::vector<int> uv_class(nc);
-    for(int c = 0; c < nc; ++c) uv_class[c] = uv_uf.find(c);
-    std::vector<char> handle_slit(nc, 0);
+    // ---- closed genus-0 charts get a slit; other charts that are not disks
+    // (handles, several boundary loops) a cut graph through their handles
+    std::vector<char> closed(n_charts, 0), general(n_charts, 0);
     for(int k = 0; k < n_charts; ++k)
     {
-      if(!general[k]) continue;
-      pending[k] = 0;
-      const std::vector<int> faces_k(chart_faces.begin() + chart_face_start[k],
-                                     chart_faces.begin() + chart_face_start[k + 1]);
-      internal::Flat_chart ch;
-      ch.faces = &faces_k;
-      ch.cls = &uv_class;
-      ch.copp = &copp;
-      ch.cut = &cut;
-      ch.side_length = side_length;
-      ch.point = [&](int c) { return P[cv[c]]; };
-      double longest = -1;
-      for(std::size_t i = 0; i < loop_sides.size(); ++i)
+      if(loops[k] == 1 && chi[k] == 1)
+        continue;
+      if(loops[k] == 0 && chi[k] == 2)
+        closed[k] = 1;
+      else if((2 - chi[k] - loops[k]) % 2 != 0 || 2 - chi[k] - loops[k] < 0)
       {
-        if(loop_chart[i] != k) continue;
-        double length = 0;
-        for(int s : loop_sides[i]) length += side_length(s);
-        if(length > longest) { longest = length; ch.outer = static_cast<int>(ch.loops.size()); }
-        ch.loops.push_back(loop_sides[i]);
+        message = "chart " + std::to_string(k) + " has an impossible Euler characteristic " +
+                  std::to_string(chi[k]) + " with " + std::to_string(loops[k]) + " boundary loops";
+        return ERROR_NOT_A_DISK;
       }
-      const int genus = (2 - chi[k] - loops[k]) / 2;
-      std::vector<int> real_sides, border_sides;
-      if(genus > 0)
+      else
+        general[k] = 1;
+    }
+    auto describe_chart = [&](int k) -> std::string
+    {
+      return "chart " + std::to_string(k) + " (faces connected across non-seam edges, " +
+             std::to_string(chart_face_start[k + 1] - chart_face_start[k]) + " faces, genus " +
+             std::to_string((2 - chi[k] - loops[k]) / 2) + ", " + std::to_string(loops[k]) + " boundary loops)";
+    };
+    auto fail_chart = [&](int k, const std::string& why) -> Error_code
+    {
+      message = describe_chart(k) + why;
+      failed.assign(chart_faces.begin() + chart_face_start[k], chart_faces.begin() + chart_face_start[k + 1]);
+      return ERROR_INITIAL_PARAMETERIZATION;
+    };
+
+
+    // Ring of corner sides ending at the vertex of corner c: H[r] for
+    // r = c, prev(copp(c)), ...
+    auto ring_of = [&](int c) -> std::vector<int>
+    {
+      std::vector<int> ring;
+      int r = c;
+      do { ring.push_back(r); r = prev_c(copp[r]); } while(r != c && ring.size() <= std::size_t(nc));
+      return ring;
+    };
+
+    // The first choice: two edges at one vertex not on a common triangle
+    // (consecutive in the ring). Returns one corner side per edge.
+    auto two_edge_slit = [&](int k) -> std::vector<int>
+    {
+      double best = std::numeric_limits<double>::infinity();
+      int best_a = -1, best_b = -1;
+      // The vertex farthest from the chart's centroid, a protrusion's tip
+      // where a seam is likely to end anyway; its straightest pair of edges.
       {
-        double length = 0;
-        if(!internal::Handle_cut(ch, genus).compute(real_sides, border_sides, length))
+        const int* faces_begin = chart_faces.data() + chart_face_start[k];
+        const int* faces_end = chart_faces.data() + chart_face_start[k + 1];
+        double centroid[3] = { 0, 0, 0 };
+        for(const int* f = faces_begin; f != faces_end; ++f)
+          for(int j = 0; j < 3; ++j)
+            for(int d = 0; d < 3; ++d) centroid[d] += P[cv[3 * *f + j]][d];
+        for(int d = 0; d < 3; ++d) centroid[d] /= 3. * double(faces_end - faces_begin);
+        int tip = -1;
+        double farthest = -1;
+        for(const int* f = faces_begin; f != faces_end; ++f)
+          for(int j = 0; j < 3; ++j)
+          {
+            const int c = 3 * *f + j;
+            double d2 = 0;
+            for(int d = 0; d < 3; ++d) d2 += (P[cv[c]][d] - centroid[d]) * (P[cv[c]][d] - centroid[d]);
+            if(d2 > farthest) { farthest = d2; tip = c; }
+          }
+        const std::vector<int> ring = ring_of(tip);
+        const std::size_t d = ring.size();
+        const XYZ& o = P[cv[tip]];
+        double straightest = 2; // cosine of the angle between the two edges
+        for(std::size_t i = 0; i < d; ++i)
+          for(std::size_t j = i + 2; j < d; ++j)
+          {
+            if(i == 0 && j == d - 1) continue; // consecutive: on one triangle
+            const XYZ& a = P[cv[prev_c(ring[i])]];
+            const XYZ& b = P[cv[prev_c(ring[j])]];
+            double aa = 0, bb = 0, ab = 0;
+            for(int q = 0; q < 3; ++q)
+            {
+              aa += (a[q] - o[q]) * (a[q] - o[q]);
+              bb += (b[q] - o[q]) * (b[q] - o[q]);
+              ab += (a[q] - o[q]) * (b[q] - o[q]);
+            }
+            const double cosine = ab / std::sqrt(aa * bb);
+            if(cosine < straightest) { straightest = cosine; best_a = ring[i]; best_b = ring[j]; }
+          }
+        if(best_a >= 0) return std::vector<int>{ best_a, best_b };
+      }
+      // else (a tetrahedron-like ring) the shortest such pair anywhere, or any pair
+      for(int pass = 0; pass < 2 && best_a < 0; ++pass)
+      {
+        std::vector<char> vdone(nv, 0);
+        for(int c = 0; c < nc; ++c)
         {
-          message = describe_chart(k) + ": no cut graph through its handles was found";
-          return ERROR_INITIAL_PARAMETERIZATION;
+          if(chart_of_face[c / 3] != k || vdone[cv[c]]) continue;
+          vdone[cv[c]] = 1;
+          const std::vector<int> ring = ring_of(c);
+          const std::size_t d = ring.size();
+          std::vector<double> len(d);
+          for(std::size_t i = 0; i < d; ++i)
+            len[i] = side_length(ring[i]);
+          for(std::size_t i = 0; i < d; ++i)
+            for(std::size_t j = i + 1; j < d; ++j)
+            {
+              const bool adjacent = (j == i + 1) || (i == 0 && j == d - 1);
+              if(pass == 0 && adjacent) continue;
+              if(len[i] + len[j] < best)
+              {
+                best = len[i] + len[j];
+                best_a = ring[i];
+                best_b = ring[j];
+              }
+            }
         }
       }
-      for(int s : real_sides) handle_slit[s] = handle_slit[copp[s]] = 1;
-      bool ok = false;
-      for(int attempt = 0; attempt < 2 && !ok; ++attempt)
-        ok = internal::map_filled_chart(ch, handle_slit, border_sides, attempt == 1, uv) && finish_chart(k);
-      if(!ok)
-      {
-        message = describe_chart(k) + ": its Tutte and mean value maps, cut to a disk through " +
-                  std::to_string(real_sides.size()) + " edges, have flipped or degenerate triangles";
-        return ERROR_INITIAL_PARAMETERIZATION;
-      }
-      for(int s : real_sides) slit_edges.push_back(edge(H[s], tm));
-    }
-  }
+      if(best_a < 0)
+        return std::vector<int>();
+      return std::vector<int>{ best_a, best_b };
+    };
 
-  for(int k = 0; k < n_charts; ++k)
-    if(pending[k] && !prepare(k))
+    // The fallbacks: shortest paths on the 3D edge lengths (Dijkstra). A closed
+    // chart is a whole connected component, so the search stays in it.
+    // H[c] runs from cv[prev_c(c)] to cv[c].
+    std::vector<int> out_start, out_side;
+    std::vector<double> dist;
+    std::vector<int> pred; // the side by which a vertex was reached, -1 at the sources
+    auto dijkstra = [&](const std::vector<int>& sources)
     {
-      message = describe_chart(k) + ": no slit was found";
-      return ERROR_INITIAL_PARAMETERIZATION;
+      if(out_start.empty())
+      {
+        out_start.assign(nv + 1, 0);
+        out_side.resize(nc);
+        for(int c = 0; c < nc; ++c) ++out_start[cv[prev_c(c)] + 1];
+        for(std::size_t v = 0; v < nv; ++v) out_start[v + 1] += out_start[v];
+        std::vector<int> fill(out_start.begin(), out_start.end() - 1);
+        for(int c = 0; c < nc; ++c) out_side[fill[cv[prev_c(c)]]++] = c;
+      }
+      dist.assign(nv, std::numeric_limits<double>::infinity());
+      pred.assign(nv, -1);
+      typedef std::pair<double, int> Item; // ties are broken by the vertex index: deterministic
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+      for(int s : sources)
+      {
+        dist[s] = 0;
+        queue.push(Item(0., s));
+      }
+      while(!queue.empty())
+      {
+        const Item top = queue.top();
+        queue.pop();
+        const int u = top.second;
+        if(top.first > dist[u]) continue;
+        for(int i = out_start[u]; i < out_start[u + 1]; ++i)
+        {
+          const int c = out_side[i];
+          const double d = top.first + side_length(c);
+          if(d < dist[cv[c]])
+          {
+            dist[cv[c]] = d;
+            pred[cv[c]] = c;
+            queue.push(Item(d, cv[c]));
+          }
+        }
+      }
+    };
+    auto chart_vertices = [&](int k) -> std::vector<int>
+    {
+      std::vector<int> vs;
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+        for(int j = 0; j < 3; ++j) vs.push_back(cv[3 * chart_faces[i] + j]);
+      std::sort(vs.begin(), vs.end());
+      vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+      return vs;
+    };
+    auto farthest = [&](const std::vector<int>& vs) -> int
+    {
+      int best = vs.front();
+      for(int v : vs)
+        if(dist[v] > dist[best]) best = v;
+      return best;
+    };
+    // A shortest path between two approximately farthest vertices (double
+    // sweep: the farthest vertex b from the farthest vertex a from an arbitrary
+    // one): a simple path, so the slit chart is a disk.
+    auto path_slit = [&](int k) -> std::vector<int>
+    {
+      const std::vector<int> vs = chart_vertices(k);
+      dijkstra(std::vector<int>(1, cv[3 * first_face[k]]));
+      const int a = farthest(vs);
+      dijkstra(std::vector<int>(1, a));
+      std::vector<int> sides;
+      for(int v = farthest(vs); pred[v] >= 0; v = cv[prev_c(pred[v])])
+        sides.push_back(pred[v]);
+      if(sides.size() < 2) // a single edge is no slit a circle can be put on
+        sides.clear();
+      return sides;
+    };
+
+    // Attempts, in order, until the chart's map has no flipped or degenerate triangle:
+    // closed charts: two-edge slit + Tutte, path + Tutte, path + mean value coordinates;
+    // disks: Tutte, mean value coordinates.
+    auto n_attempts = [&](int k) { return closed[k] ? 3 : 2; };
+    auto uses_mean_value = [&](int k, int a) { return closed[k] ? a == 2 : a == 1; };
+    std::vector<int> attempt(n_charts, 0);
+    std::vector<std::vector<int> > slit_sides(n_charts);
+    // Sets the slit of attempt[k], skipping attempts whose slit does not exist.
+    auto prepare = [&](int k) -> bool
+    {
+      for(; attempt[k] < n_attempts(k); ++attempt[k])
+      {
+        if(!closed[k]) return true;
+        if(attempt[k] == 0) slit_sides[k] = two_edge_slit(k);
+        else if(attempt[k] == 1) slit_sides[k] = path_slit(k);
+        else if(slit_sides[k].empty()) continue; // no path for mean value coordinates either
+        if(!slit_sides[k].empty()) return true;
+      }
+      return false;
+    };
+
+    // ---- Tutte (or mean value coordinates) on a Seam_mesh of the charts
+    std::vector<char> slit(nc, 0); // corner sides cut by a slit
+    const auto is_cut_edge = [&](edge_descriptor e) -> bool
+    {
+      const int c = corner_of[get(himap, halfedge(e, tm))];
+      const int c2 = corner_of[get(himap, opposite(halfedge(e, tm), tm))];
+      const int s = c >= 0 ? c : c2;
+      return s >= 0 && (cut[s] || slit[s]);
+    };
+    typedef Seam_mesh_maker<TriangleMesh>                                        Maker;
+    typedef typename Maker::Seam_mesh                                            Seam_mesh;
+    typedef typename SMP::internal::Kernel_traits<Seam_mesh>::Kernel::Point_2   SMP_point_2;
+    typedef internal::Circular_border_arc_length_with_point_map<Seam_mesh, VPM>  Border;
+    typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>          Tutte;
+    typedef internal::Mean_value_coordinates_with_point_map<Seam_mesh, VPM, Border> Mean_value;
+
+    std::vector<SMP_point_2> seam_uv_data(nh);
+    const auto seam_uv = boost::make_iterator_property_map(seam_uv_data.begin(), himap);
+    std::vector<UV> uv(nc);
+    std::vector<UV> lo(n_charts), hi(n_charts);
+
+    // Reads chart k back from the seam mesh, mirrors it if needed (the circle is
+    // walked along the border loop) so that faces keep their 3D orientation,
+    // scales it so that its UV area equals its 3D area, and checks that every
+    // triangle has a positive area.
+    auto finish_chart = [&](int k) -> bool
+    {
+      const double inf = std::numeric_limits<double>::infinity();
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+        for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+          if(!std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1]))
+            return false;
+      double area_uv = 0, area_3d = 0;
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      {
+        const int f = chart_faces[i];
+        area_uv += internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]);
+        area_3d += area3[f];
+      }
+      if(!(area_uv != 0) || !std::isfinite(area_uv))
+        return false;
+      const double s = std::sqrt(area_3d / std::abs(area_uv));
+      const double sx = area_uv < 0 ? -s : s, sy = s;
+      lo[k] = UV{{ inf, inf }};
+      hi[k] = UV{{ -inf, -inf }};
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+        for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+        {
+          uv[c][0] *= sx;
+          uv[c][1] *= sy;
+          for(int j = 0; j < 2; ++j)
+          {
+            lo[k][j] = (std::min)(lo[k][j], uv[c][j]);
+            hi[k][j] = (std::max)(hi[k][j], uv[c][j]);
+          }
+        }
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+      {
+        const int f = chart_faces[i];
+        if(!(internal::signed_area_2(uv[3 * f], uv[3 * f + 1], uv[3 * f + 2]) > 0))
+          return false;
+      }
+      // two vertices at (about) one point: a map shrunk to the precision of
+      // doubles, around which no scaffold can be meshed
+      const double cell = 1e-12 * (std::max)(hi[k][0] - lo[k][0], hi[k][1] - lo[k][1]);
+      std::vector<std::pair<std::pair<long long, long long>, int> > at;
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+        for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+          at.emplace_back(std::make_pair(std::llround((uv[c][0] - lo[k][0]) / cell),
+                                         std::llround((uv[c][1] - lo[k][1]) / cell)), cv[c]);
+      std::sort(at.begin(), at.end());
+      for(std::size_t i = 1; i < at.size(); ++i)
+        if(at[i].first == at[i - 1].first && at[i].second != at[i - 1].second) return false;
+      return true;
+    };
+    auto accept_chart = [&](Seam_mesh& smesh, int k) -> bool
+    {
+      for(int i = chart_face_start[k]; i < chart_face_start[k + 1]; ++i)
+        for(int c = 3 * chart_faces[i]; c < 3 * chart_faces[i] + 3; ++c)
+        {
+          const SMP_point_2 p = get(seam_uv, seam_mesh_corner_vertex(smesh, H[c]));
+          uv[c] = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()) }};
+        }
+      return finish_chart(k);
+    };
+
+    // ---- charts with handles or several boundary loops: cut graph, filled-hole Tutte
+    std::vector<edge_descriptor> slit_edges;
+    std::vector<char> pending(n_charts, 1);
+    {
+      std::vector<int> uv_class(nc);
+      for(int c = 0; c < nc; ++c) uv_class[c] = uv_uf.find(c);
+      std::vector<char> handle_slit(nc, 0);
+      for(int k = 0; k < n_charts; ++k)
+      {
+        if(!general[k]) continue;
+        pending[k] = 0;
+        const std::vector<int> faces_k(chart_faces.begin() + chart_face_start[k],
+                                       chart_faces.begin() + chart_face_start[k + 1]);
+        internal::Flat_chart ch;
+        ch.faces = &faces_k;
+        ch.cls = &uv_class;
+        ch.copp = &copp;
+        ch.cut = &cut;
+        ch.side_length = side_length;
+        ch.point = [&](int c) { return P[cv[c]]; };
+        double longest = -1;
+        for(std::size_t i = 0; i < loop_sides.size(); ++i)
+        {
+          if(loop_chart[i] != k) continue;
+          double length = 0;
+          for(int s : loop_sides[i]) length += side_length(s);
+          if(length > longest) { longest = length; ch.outer = static_cast<int>(ch.loops.size()); }
+          ch.loops.push_back(loop_sides[i]);
+        }
+        const int genus = (2 - chi[k] - loops[k]) / 2;
+        std::vector<int> real_sides, border_sides;
+        if(genus > 0)
+        {
+          double length = 0;
+          if(!internal::Handle_cut(ch, genus).compute(real_sides, border_sides, length))
+          {
+            return fail_chart(k, ": no cut graph through its handles was found");
+          }
+        }
+        for(int s : real_sides) handle_slit[s] = handle_slit[copp[s]] = 1;
+        bool ok = false;
+        for(int attempt = 0; attempt < 2 && !ok; ++attempt)
+          ok = internal::map_filled_chart(ch, handle_slit, border_sides, attempt == 1, uv) && finish_chart(k);
+        if(!ok)
+        {
+          return fail_chart(k, ": its Tutte and mean value maps, cut to a disk through " +
+                               std::to_string(real_sides.size()) + " edges, have flipped, degenerate or coincident triangles");
+        }
+        for(int s : real_sides) slit_edges.push_back(edge(H[s], tm));
+      }
     }
-  for(bool any = std::find(pending.begin(), pending.end(), 1) != pending.end(); any; )
-  {
-    std::fill(slit.begin(), slit.end(), 0);
+
+    for(int k = 0; k < n_charts; ++k)
+      if(pending[k] && !prepare(k))
+      {
+        return fail_chart(k, ": no slit was found");
+      }
+    for(bool any = std::find(pending.begin(), pending.end(), 1) != pending.end(); any; )
+    {
+      std::fill(slit.begin(), slit.end(), 0);
+      for(int k = 0; k < n_charts; ++k)
+        for(int s : slit_sides[k])
+          slit[s] = slit[copp[s]] = 1;
+      Maker maker(tm, boost::make_function_property_map<edge_descriptor, bool>(is_cut_edge));
+      Seam_mesh& smesh = maker.seam_mesh();
+      any = false;
+      for(int k = 0; k < n_charts; ++k)
+      {
+        if(!pending[k]) continue;
+        const auto bhd = maker.border_halfedge(face(H[3 * first_face[k]], tm));
+        if(bhd == typename boost::graph_traits<Seam_mesh>::halfedge_descriptor())
+        {
+          return fail_chart(k, ": no border was found");
+        }
+        const SMP::Error_code status = uses_mean_value(k, attempt[k])
+          ? SMP::parameterize(smesh, Mean_value(vpm, Border(vpm)), bhd, seam_uv)
+          : SMP::parameterize(smesh, Tutte(Border(vpm)), bhd, seam_uv);
+        if(status == SMP::OK && accept_chart(smesh, k))
+        {
+          pending[k] = 0;
+          continue;
+        }
+        ++attempt[k];
+        if(!prepare(k))
+        {
+          return fail_chart(k, ": its Tutte and mean value maps have flipped, degenerate or coincident triangles");
+        }
+        any = true;
+      }
+    }
     for(int k = 0; k < n_charts; ++k)
       for(int s : slit_sides[k])
-        slit[s] = slit[copp[s]] = 1;
-    Maker maker(tm, boost::make_function_property_map<edge_descriptor, bool>(is_cut_edge));
-    Seam_mesh& smesh = maker.seam_mesh();
-    any = false;
+        slit_edges.push_back(edge(H[s], tm));
+    for(int c = 0; c < nc; ++c)
+      if(extra[c] && c < copp[c]) slit_edges.push_back(edge(H[c], tm));
+
+    // Grid of charts in face order; a column is as wide as its widest chart.
+    const int n_cols = static_cast<int>(std::ceil(std::sqrt(double(n_charts))));
+    const int n_rows = (n_charts + n_cols - 1) / n_cols;
+    std::vector<double> col_w(n_cols, 0), row_h(n_rows, 0);
+    double largest = 0;
     for(int k = 0; k < n_charts; ++k)
     {
-      if(!pending[k]) continue;
-      const auto bhd = maker.border_halfedge(face(H[3 * first_face[k]], tm));
-      if(bhd == typename boost::graph_traits<Seam_mesh>::halfedge_descriptor())
-      {
-        message = describe_chart(k) + ": no border was found";
-        return ERROR_INITIAL_PARAMETERIZATION;
-      }
-      const SMP::Error_code status = uses_mean_value(k, attempt[k])
-        ? SMP::parameterize(smesh, Mean_value(vpm, Border(vpm)), bhd, seam_uv)
-        : SMP::parameterize(smesh, Tutte(Border(vpm)), bhd, seam_uv);
-      if(status == SMP::OK && accept_chart(smesh, k))
-      {
-        pending[k] = 0;
-        continue;
-      }
-      ++attempt[k];
-      if(!prepare(k))
-      {
-        message = describe_chart(k) + ": its Tutte and mean value maps have flipped or degenerate triangles";
-        return ERROR_INITIAL_PARAMETERIZATION;
-      }
-      any = true;
+      const double w = hi[k][0] - lo[k][0], h = hi[k][1] - lo[k][1];
+      col_w[k % n_cols] = (std::max)(col_w[k % n_cols], w);
+      row_h[k / n_cols] = (std::max)(row_h[k / n_cols], h);
+      largest = (std::max)({ largest, w, h });
     }
-  }
-  for(int k = 0; k < n_charts; ++k)
-    for(int s : slit_sides[k])
-      slit_edges.push_back(edge(H[s], tm));
+    const double gap = 0.05 * largest;
+    std::vector<double> col_x(n_cols, 0), row_y(n_rows, 0);
+    for(int i = 1; i < n_cols; ++i) col_x[i] = col_x[i - 1] + col_w[i - 1] + gap;
+    for(int i = 1; i < n_rows; ++i) row_y[i] = row_y[i - 1] + row_h[i - 1] + gap;
 
-  // Grid of charts in face order; a column is as wide as its widest chart.
-  const int n_cols = static_cast<int>(std::ceil(std::sqrt(double(n_charts))));
-  const int n_rows = (n_charts + n_cols - 1) / n_cols;
-  std::vector<double> col_w(n_cols, 0), row_h(n_rows, 0);
-  double largest = 0;
-  for(int k = 0; k < n_charts; ++k)
-  {
-    const double w = hi[k][0] - lo[k][0], h = hi[k][1] - lo[k][1];
-    col_w[k % n_cols] = (std::max)(col_w[k % n_cols], w);
-    row_h[k / n_cols] = (std::max)(row_h[k / n_cols], h);
-    largest = (std::max)({ largest, w, h });
-  }
-  const double gap = 0.05 * largest;
-  std::vector<double> col_x(n_cols, 0), row_y(n_rows, 0);
-  for(int i = 1; i < n_cols; ++i) col_x[i] = col_x[i - 1] + col_w[i - 1] + gap;
-  for(int i = 1; i < n_rows; ++i) row_y[i] = row_y[i - 1] + row_h[i - 1] + gap;
+    // ---- write (nothing was written before this point)
+    for(int c = 0; c < nc; ++c)
+    {
+      const int k = chart_of_face[c / 3];
+      put(uvmap, H[c], Point_2(uv[c][0] - lo[k][0] + col_x[k % n_cols],
+                               uv[c][1] - lo[k][1] + row_y[k / n_cols]));
+    }
+    for(edge_descriptor e : slit_edges)
+      put(seam_map, e, true);
+    return OK;
+  };
 
-  // ---- write (nothing was written before this point)
-  for(int c = 0; c < nc; ++c)
+  // A chart whose maps all degenerate (long protrusions, many holes: Tutte's
+  // map shrinks them below double precision) is split into geodesic Voronoi
+  // regions around 2, 4, ... farthest-point seeds, and everything is tried again.
+  auto split = [&](const std::vector<int>& fs, int n_seeds, std::vector<char>& extra)
   {
-    const int k = chart_of_face[c / 3];
-    put(uvmap, H[c], Point_2(uv[c][0] - lo[k][0] + col_x[k % n_cols],
-                             uv[c][1] - lo[k][1] + row_y[k / n_cols]));
+    std::vector<char> in_set(nf, 0);
+    for(int f : fs) in_set[f] = 1;
+    std::vector<double> d(nv, std::numeric_limits<double>::infinity());
+    std::vector<int> label(nv, -1);
+    std::vector<std::vector<std::pair<int, double> > > adj(nv);
+    for(int f : fs)
+      for(int c = 3 * f; c < 3 * f + 3; ++c)
+      {
+        adj[cv[prev_c(c)]].emplace_back(cv[c], side_length(c));
+        adj[cv[c]].emplace_back(cv[prev_c(c)], side_length(c));
+      }
+    auto grow = [&](const std::vector<int>& seeds)
+    {
+      typedef std::pair<double, int> Item;
+      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
+      for(std::size_t i = 0; i < seeds.size(); ++i)
+      {
+        d[seeds[i]] = 0;
+        label[seeds[i]] = static_cast<int>(i);
+        queue.push(Item(0., seeds[i]));
+      }
+      while(!queue.empty())
+      {
+        const Item top = queue.top();
+        queue.pop();
+        if(top.first > d[top.second]) continue;
+        for(const auto& e : adj[top.second])
+          if(top.first + e.second < d[e.first])
+          {
+            d[e.first] = top.first + e.second;
+            label[e.first] = label[top.second];
+            queue.push(Item(d[e.first], e.first));
+          }
+      }
+    };
+    std::vector<int> seeds(1, cv[3 * fs.front()]);
+    while(int(seeds.size()) < n_seeds)
+    {
+      std::fill(d.begin(), d.end(), std::numeric_limits<double>::infinity());
+      grow(seeds);
+      int far = seeds.front();
+      for(int f : fs)
+        for(int c = 3 * f; c < 3 * f + 3; ++c)
+          if(d[cv[c]] > d[far]) far = cv[c];
+      if(!(d[far] > 0)) break;
+      seeds.push_back(far);
+    }
+    std::fill(d.begin(), d.end(), std::numeric_limits<double>::infinity());
+    grow(seeds);
+    auto face_label = [&](int f)
+    {
+      int best = cv[3 * f];
+      for(int c = 3 * f + 1; c < 3 * f + 3; ++c)
+        if(d[cv[c]] < d[best]) best = cv[c];
+      return label[best];
+    };
+    for(int f : fs)
+      for(int c = 3 * f; c < 3 * f + 3; ++c)
+        if(copp[c] >= 0 && in_set[copp[c] / 3] && face_label(f) != face_label(copp[c] / 3))
+          extra[c] = extra[copp[c]] = 1;
+  };
+
+  std::vector<char> extra(nc, 0);
+  std::vector<int> failed;
+  for(int round = 0; ; ++round)
+  {
+    failed.clear();
+    const Error_code ec = solve(extra, failed);
+    if(ec == OK) message.clear(); // (the charts that had to be split said why)
+    if(ec != ERROR_INITIAL_PARAMETERIZATION || failed.empty() || round == 6) return ec;
+    split(failed, 2 << round, extra);
   }
-  for(edge_descriptor e : slit_edges)
-    put(seam_map, e, true);
-  return OK;
 }
 
 } // namespace internal

@@ -320,12 +320,32 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
       if(!cut[c]) { fopp[3 * i + k] = local[copp[c]]; fcut[3 * i + k] = slit[c]; }
       else fcut[3 * i + k] = 1; // outer loop, unless an inner loop's fan takes it below
     }
+  // Where the cut passes through a vertex of a hole, the hole opens onto the
+  // border there: its fan is cut at that vertex too (else the two sides of
+  // the cut would share one UV point). Twice on one hole would cut the fan
+  // in two: left to the caller (split the chart).
+  std::vector<char> on_cut(cls.size(), 0);
+  for(int i = 0; i < F; ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int c = 3 * faces[i] + k;
+      if(slit[c] || is_border_cut[c]) on_cut[cls[c]] = on_cut[cls[Flat_chart::prev(c)]] = 1;
+    }
   int fan = F;
   for(std::size_t i = 0; i < ch.loops.size(); ++i)
   {
     if(int(i) == ch.outer) continue;
     const std::vector<int>& loop = ch.loops[i];
     const int m = static_cast<int>(loop.size());
+    int touched = 0;
+    for(int j = 0; j < m; ++j)
+    {
+      if(on_cut[cls[loop[(j + 1) % m]]])
+      {
+        if(++touched > 1) return false;
+        fcut[3 * (fan + j) + 1] = fcut[3 * (fan + (j + 1) % m) + 2] = 1;
+      }
+    }
     for(int j = 0; j < m; ++j)
     {
       const int s = loop[j], f = fan + j, f_next = fan + (j + 1) % m, f_prev = fan + (j + m - 1) % m;
