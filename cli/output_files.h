@@ -57,6 +57,30 @@ inline std::string make_temporary_beside(const std::string& path)
   return std::string(buf.data());
 }
 
+// The file a write to `path` lands in: through a symbolic link, its target
+// (renaming over the link would replace the link).
+inline std::string resolved_target(const std::string& path)
+{
+  std::error_code ec;
+  if(std::filesystem::is_symlink(path, ec))
+  {
+    const std::filesystem::path t = std::filesystem::weakly_canonical(path, ec);
+    if(!ec)
+      return t.string();
+  }
+  return path;
+}
+
+// Devices, pipes (/dev/stdout, a fifo): written in place, not replaced.
+inline bool is_special_file(const std::string& path)
+{
+  std::error_code ec;
+  if(path.compare(0, 5, "/dev/") == 0 || path.compare(0, 6, "/proc/") == 0)
+    return true;
+  return std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec) &&
+         !std::filesystem::is_directory(path, ec);
+}
+
 } // namespace internal
 
 // Whether `path` can be written: its directory exists and accepts a new file
@@ -65,7 +89,15 @@ inline std::string make_temporary_beside(const std::string& path)
 inline bool check_writable(const std::string& path, std::string& error)
 {
   std::error_code ec;
-  const std::filesystem::path dir = internal::directory_of(path);
+  if(internal::is_special_file(path))
+  {
+    if(::access(path.c_str(), W_OK) == 0)
+      return true;
+    error = std::strerror(errno);
+    return false;
+  }
+  const std::string target = internal::resolved_target(path);
+  const std::filesystem::path dir = internal::directory_of(target);
   if(!std::filesystem::is_directory(dir, ec))
   {
     error = "directory '" + dir.string() + "' does not exist";
@@ -76,7 +108,7 @@ inline bool check_writable(const std::string& path, std::string& error)
     error = "it is a directory";
     return false;
   }
-  const std::string probe = internal::make_temporary_beside(path);
+  const std::string probe = internal::make_temporary_beside(target);
   if(probe.empty())
   {
     error = std::string("cannot create a file in '") + dir.string() + "': " + std::strerror(errno);
@@ -103,9 +135,13 @@ inline bool same_file(const std::string& a, const std::string& b)
 
 // Calls `write(temporary_path)` and renames the temporary file over `path`
 // if it returned true; otherwise removes it and leaves `path` as it was.
+// A device or a pipe is written in place; a link is followed.
 template <typename Write>
-bool write_atomically(const std::string& path, Write write)
+bool write_atomically(const std::string& output, Write write)
 {
+  if(internal::is_special_file(output))
+    return write(output);
+  const std::string path = internal::resolved_target(output);
   const std::string tmp = internal::make_temporary_beside(path);
   if(tmp.empty())
     return false;

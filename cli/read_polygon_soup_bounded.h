@@ -59,9 +59,15 @@ inline std::string format_count(double x)
   return buf;
 }
 
+// A token for a message: at most 40 characters, control bytes as '?' (a
+// binary file must not write escape sequences to the terminal).
 inline std::string quote_token(const std::string& t)
 {
-  return "'" + (t.size() > 40 ? t.substr(0, 40) + "..." : t) + "'";
+  std::string s = t.size() > 40 ? t.substr(0, 40) + "..." : t;
+  for(char& c : s)
+    if(static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      c = '?';
+  return "'" + s + "'";
 }
 
 // Splits [b, e) into whitespace-separated tokens, stopping at '#' if `comments`.
@@ -125,7 +131,8 @@ bool read_obj_soup(const std::string& data, std::vector<Point>& points,
     {
       // x y z, optionally w or a color (r g b [a]): numbers only
       if(tok.size() < 4 || tok.size() > 8)
-        return fail("a vertex needs 3 coordinates (" + std::to_string(tok.size() - 1) + " values)");
+        return fail("a vertex has 3 coordinates, optionally w or a color (" + std::to_string(tok.size() - 1) +
+                    " values)");
       double c[3];
       for(std::size_t i = 1; i < tok.size(); ++i)
       {

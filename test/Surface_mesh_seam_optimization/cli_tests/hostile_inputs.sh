@@ -9,16 +9,19 @@ BIN=$1 DATA=$2 SCRATCH=$3
 mkdir -p "$SCRATCH" && cd "$SCRATCH" || exit 1
 rm -f ./*
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# AddressSanitizer reserves terabytes of address space: no ulimit -v then.
+vmem=1000000
+ldd "$BIN" 2>/dev/null | grep -q libasan && vmem=unlimited
 
 refused() { # $1: file, $2: text the message must contain; more arguments go to the program
   local f=$1 want=$2; shift 2
   local t0=$(date +%s%N)
-  ( ulimit -v 1000000; exec timeout 20 "$BIN" "$f" --keep-seams -o out.obj --quiet "$@" ) >out.txt 2>err.txt
+  ( ulimit -v $vmem; exec timeout 20 "$BIN" "$f" --keep-seams -o out.obj --quiet "$@" ) >out.txt 2>err.txt
   local rc=$? ms=$(( ($(date +%s%N) - t0) / 1000000 ))
   [ "$rc" -eq 1 ] || fail "$f: exit code $rc, expected 1 (stderr: $(cat err.txt))"
   [ "$(wc -l <err.txt)" -eq 1 ] || fail "$f: expected one stderr line, got: $(cat err.txt)"
   grep -qF -- "$want" err.txt || fail "$f: message does not say '$want': $(cat err.txt)"
-  ((ms < 2000)) || fail "$f: took $ms ms"
+  ((ms < 5000)) || fail "$f: took $ms ms"
   [ ! -e out.obj ] || fail "$f: an output was written"
 }
 
@@ -96,4 +99,22 @@ r = json.load(open('r.json'))
 assert r['status'] == 'OK' and r['repair']['degenerate_faces_removed'] == 2, r
 assert sum(1 for l in open('fixed.obj') if l.startswith('f ')) == r['faces'], r['faces']
 PY
+
+# One vertex at 2^31: no healthy face is blamed for zero area (the library's
+# check was relative to the bounding box and named face 0; the initial map
+# may still fail at such a scale).
+python3 - <<'PY'
+n = 6
+with open('far_vertex.obj', 'w') as f:
+    for j in range(n + 1):
+        for i in range(n + 1):
+            x, y = (2.0**31, 2.0**31) if (i, j) == (n, n) else (i / n, j / n)
+            f.write("v %.17g %.17g 0\n" % (x, y))
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i + 1
+            f.write("f %d %d %d\nf %d %d %d\n" % (a, a + 1, a + n + 2, a, a + n + 2, a + n + 1))
+PY
+"$BIN" far_vertex.obj --keep-seams -o far.obj --quiet >out.txt 2>err.txt
+! grep -qi "zero.area" err.txt || fail "far vertex: a healthy face is blamed: $(cat err.txt)"
 echo "ok"

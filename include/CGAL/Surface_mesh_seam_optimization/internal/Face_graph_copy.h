@@ -7,6 +7,7 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_FACE_GRAPH_COPY_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -52,7 +53,6 @@ Error_code copy_face_graph(const TriangleMesh& tm, VertexPointMap vpm, Cut_mesh&
 
   const std::size_t nv = num_vertices(tm);
   cm.points.assign(3 * nv, 0.);
-  double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
   for(auto v : vertices(tm))
   {
     const auto& p = get(vpm, v);
@@ -66,7 +66,6 @@ Error_code copy_face_graph(const TriangleMesh& tm, VertexPointMap vpm, Cut_mesh&
         return ERROR_NON_FINITE_COORDINATES;
       }
       cm.points[3*i + k] = x;
-      lo[k] = (std::min)(lo[k], x); hi[k] = (std::max)(hi[k], x);
     }
   }
 
@@ -115,12 +114,21 @@ Error_code copy_face_graph(const TriangleMesh& tm, VertexPointMap vpm, Cut_mesh&
   }
 
   cm.compute_rest_shape();
-  const double diag2 = (hi[0]-lo[0])*(hi[0]-lo[0]) + (hi[1]-lo[1])*(hi[1]-lo[1]) + (hi[2]-lo[2])*(hi[2]-lo[2]);
+  // Relative to each face's longest edge (compute_initial_parameterization()'s
+  // definition), not to the bounding box: a far vertex must not condemn small faces.
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
   {
-    if(!(cm.face_area[f] > 1e-14 * diag2) || !std::isfinite(cm.rest_inverse[4*f+2]))
+    const double* p[3];
+    for(int k = 0; k < 3; ++k) p[k] = &cm.points[3 * cm.corner_vertex[3*f + k]];
+    double u[3], w[3], lmax2 = 0;
+    for(int k = 0; k < 3; ++k) { u[k] = p[1][k] - p[0][k]; w[k] = p[2][k] - p[0][k]; }
+    for(int k = 0; k < 3; ++k)
+      lmax2 = (std::max)(lmax2, (p[k][0]-p[(k+1)%3][0])*(p[k][0]-p[(k+1)%3][0]) + (p[k][1]-p[(k+1)%3][1])*(p[k][1]-p[(k+1)%3][1]) + (p[k][2]-p[(k+1)%3][2])*(p[k][2]-p[(k+1)%3][2]));
+    const double n[3] = { u[1]*w[2] - u[2]*w[1], u[2]*w[0] - u[0]*w[2], u[0]*w[1] - u[1]*w[0] };
+    if(!(std::sqrt(n[0]*n[0] + n[1]*n[1] + n[2]*n[2]) > degenerate_triangle_threshold() * lmax2) ||
+       !std::isfinite(cm.rest_inverse[4*f+2]))
     {
-      message = "face " + std::to_string(f) + " has zero area";
+      message = "face " + std::to_string(f + 1) + " (numbered from 1) has zero area";
       return ERROR_DEGENERATE_TRIANGLE;
     }
   }
