@@ -379,3 +379,12 @@ BOOST_AUTO_TEST_CASE(cgal_sample_meshes_meet_the_bound)
   check_optimized({ "horizons.off", 2, 0, 2 });
   check_optimized({ "blobby_3cc.off", 3, 0, 4 });
 }
+
+// Very coarse meshes (46 and 180 triangles, genus 3 and 1): under the
+// scaffold no split lowers E_SD above the bound; the worst triangles are
+// detached into charts of their own (E_SD 4 each) until the bound is met.
+BOOST_AUTO_TEST_CASE(coarse_meshes_meet_the_bound_by_detaching_triangles)
+{
+  check_optimized({ "3torus.off", 1, 3, 0 });
+  check_optimized({ "mpi_triang.off", 1, 1, 0 });
+}

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Detach_faces.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
@@ -120,6 +121,8 @@ public:
   }
 
   std::size_t scaffold_rebuilds() const { return m_scaffold_rebuilds; }
+  // triangles detached into charts of their own to meet the bound (see finish())
+  std::size_t detached_faces() const { return m_detached_faces; }
 
   Optimization_timings timings() const
   {
@@ -224,7 +227,12 @@ public:
       if(!m_settings.fixed_lambda)
       {
         if(m_has_best) restore_best();
-        else if(status == OK) status = WARNING_BOUND_NOT_MET;
+        else if(status == OK)
+        {
+          // no split left lowers E_SD: the worst triangles go alone (E_SD 4 each)
+          m_detached_faces = detach_faces_until_bound(m_cm, m_settings.distortion_bound);
+          if(!bound_met()) status = WARNING_BOUND_NOT_MET;
+        }
       }
     }
     return status;
@@ -837,6 +845,7 @@ private:
   Optimization_timings m_timings; // topology and scaffold; Newton keeps its own
   std::vector<double> m_x;
   std::size_t m_scaffold_rebuilds = 0, m_rejected = 0;
+  std::size_t m_detached_faces = 0;
   bool m_rebuilt_at_convergence = false;
   std::vector<int> m_tips;
   std::set<std::pair<long long, long long> > m_seen;
