@@ -209,8 +209,8 @@ void print_help(std::ostream& os)
      << "                          not with --seam-weight or --keep-seams\n"
      << "                          (default: " << default_recut_rounds << ")\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
-     << "                          write the best result so far (status WARNING_CANCELLED,\n"
-     << "                          exit 0); not with --keep-seams (default: none)\n"
+     << "                          write the best result so far (status WARNING_TIME_LIMIT,\n"
+     << "                          exit 0); also with --keep-seams (default: none)\n"
      << "  --threads N             use at most N threads (N >= 1; the result does not depend\n"
      << "                          on it)"
 #ifdef CGAL_LINKED_WITH_TBB
@@ -478,11 +478,6 @@ Parse_status parse_options(int argc, char* argv[], Options& options, std::string
             (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
     return Parse_status::ERROR;
   }
-  if(options.keep_seams && options.time_limit > 0)
-  {
-    error = "option '--time-limit' is not supported with '--keep-seams' (that mode cannot be stopped early)";
-    return Parse_status::ERROR;
-  }
   if(options.has_packing_option && !options.pack && !options.normalize)
   {
     error = "options '--texture-size' and '--margin' apply to '--pack' (or '--normalize')";
@@ -583,13 +578,14 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("vertices", std::to_string(r.vertices));
   fields.emplace_back("e_sd", json_number(res.distortion));
   fields.emplace_back("initial_e_sd", json_number(res.initial_distortion));
+  fields.emplace_back("e_sd_optimal_scale", json_number(res.distortion_at_optimal_scale));
   fields.emplace_back("distortion_bound",
                       r.mode == Mode::DISTORTION_BOUND ? json_number(r.distortion_bound, 15) : "null");
-  // Judged here from the figures (the library's flag refers to its default
-  // bound in the other modes): null where there is no bound.
+  // The library's flag (judged at the optimal scale for MIPS); null where
+  // there is no bound (it refers to its default bound in the other modes).
   fields.emplace_back("bound_met", r.mode != Mode::DISTORTION_BOUND || !ran
                                      ? "null"
-                                     : (res.distortion <= r.distortion_bound ? "true" : "false"));
+                                     : (res.bound_met ? "true" : "false"));
   fields.emplace_back("seam_weight", r.mode == Mode::SEAM_WEIGHT ? json_number(r.seam_weight, 15) : "null");
   fields.emplace_back("lambda", r.mode == Mode::KEEP_SEAMS || !ran ? "null" : json_number(res.lambda));
   fields.emplace_back("seam_length", json_number(res.seam_length));
@@ -745,16 +741,12 @@ void print_error(const std::string& line)
 class Progress_printer
 {
 public:
-  // `time_limit` > 0: every call after that many seconds (from construction)
-  // cancels the run.
   // `label` names the energy of the descent (the figure the library reports).
-  explicit Progress_printer(bool enabled, double time_limit = 0, const char* label = "E_SD")
+  // (--time-limit is the library's time_limit named parameter, not a cancel here.)
+  explicit Progress_printer(bool enabled, const char* label = "E_SD")
     : m_label(label), m_enabled(enabled), m_tty(enabled && ::isatty(STDERR_FILENO) == 1),
-      m_last(std::chrono::steady_clock::now()), m_start(m_last), m_time_limit(time_limit)
+      m_last(std::chrono::steady_clock::now())
   {}
-
-  bool time_limit_reached() const { return m_time_limit_reached; }
-
 
   // The last state (if held back), and the newline that ends the updating line.
   void finish()
@@ -769,14 +761,12 @@ public:
     m_width = 0;
   }
 
-  // Called by the library's visitor (through the request's callback); false
+  // Called by the library's visitor (through the request's callback); never
   // cancels the run.
   bool update(const SMSO::Seam_optimization_progress& p)
   {
-    if(m_time_limit > 0 && !m_time_limit_reached)
-      m_time_limit_reached = seconds_since(m_start) > m_time_limit;
     if(!m_enabled)
-      return !m_time_limit_reached;
+      return true;
     m_state = p;
     m_pending = true;
     const auto now = std::chrono::steady_clock::now();
@@ -785,7 +775,7 @@ public:
       m_last = now;
       print(p);
     }
-    return !m_time_limit_reached;   // cancels only past --time-limit
+    return true;
   }
 
 private:
@@ -813,9 +803,6 @@ private:
   bool m_enabled;
   bool m_tty;
   std::chrono::steady_clock::time_point m_last;
-  std::chrono::steady_clock::time_point m_start;
-  double m_time_limit;
-  bool m_time_limit_reached = false;
   SMSO::Seam_optimization_progress m_state;
   bool m_pending = false;
   int m_width = 0;   // of the longest line written on the current terminal line
@@ -924,7 +911,7 @@ int run(const Options& options)
     seams_from_uv_map(mesh, uvmap, seams);
 
   const char* const progress_label[] = {"E_SD", "E_arap", "E_mips"};
-  Progress_printer progress(!options.quiet, options.time_limit, progress_label[static_cast<int>(options.energy)]);
+  Progress_printer progress(!options.quiet, progress_label[static_cast<int>(options.energy)]);
   Optimization_request request;
   request.mode = report.mode;
   request.energy = options.energy;
@@ -934,6 +921,7 @@ int run(const Options& options)
   request.bijective = !options.no_bijectivity;
   request.iteration_cap = options.iteration_cap();
   request.recut_rounds = int(options.recut_rounds);
+  request.time_limit = options.time_limit;
   request.progress = [&progress](const SMSO::Seam_optimization_progress& p) { return progress.update(p); };
 
   const auto t_opt = std::chrono::steady_clock::now();
@@ -943,13 +931,19 @@ int run(const Options& options)
   const SMSO::Optimization_result& res = report.result;
   report.status = SMSO::get_error_code_name(res.status);
   report.message = res.message;
-  if(progress.time_limit_reached() && res.status == SMSO::WARNING_CANCELLED)
+  if(res.status == SMSO::WARNING_TIME_LIMIT)
   {
     const std::string n = "time limit of " + format_double(options.time_limit, 6) +
-                          " s reached: stopped after " + std::to_string(res.iterations) +
-                          " iterations, the result is the best so far";
+                          " s reached: best result so far (after " + std::to_string(res.iterations) +
+                          " iterations)";
     notes.push_back(n);
     report.notes.push_back(n);
+  }
+  // (an untangled --use-input-uv map; a warning prints its message anyway)
+  if(res.status == SMSO::OK && !res.message.empty())
+  {
+    notes.push_back(res.message);
+    report.notes.push_back(res.message);
   }
 
   if(!res.has_result())
@@ -1065,9 +1059,12 @@ int run(const Options& options)
                 << (res.message.empty() ? "" : ": " + res.message) << std::endl;
     std::ostringstream what;
     what << "E_SD " << format_double(res.initial_distortion, 6) << " -> " << format_double(res.distortion, 6);
+    // (a MIPS map's scale is free: its bound is judged at the optimal scale)
+    if(std::abs(res.distortion_at_optimal_scale - res.distortion) > 1e-6 * res.distortion)
+      what << " (" << format_double(res.distortion_at_optimal_scale, 6) << " at the optimal scale)";
     if(report.mode == Mode::DISTORTION_BOUND)
       what << " (bound " << format_double(options.distortion_bound, 6)
-           << (res.distortion <= options.distortion_bound ? ", met)" : ", NOT met)");
+           << (res.bound_met ? ", met)" : ", NOT met)");
     if(options.energy != Energy_kind::SYMMETRIC_DIRICHLET)
       what << ", energy " << energy_name(options.energy);
     if(report.mode != Mode::KEEP_SEAMS)

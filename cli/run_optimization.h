@@ -51,6 +51,7 @@ struct Optimization_request
   bool bijective = true;
   std::size_t iteration_cap = 0;
   int recut_rounds = 6;            // DISTORTION_BOUND only
+  double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.
   std::function<bool(const SMSO::Seam_optimization_progress&)> progress;
 };

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 
 #include <functional>
+#include <limits>
 
 namespace optimize_seams_cli {
 
@@ -39,7 +40,10 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
     NP::energy(energy),
     NP::combine(NP::use_uv_map_as_initial(request.use_input_uv),
                 NP::combine(NP::edge_is_seam_map(seams),
-                            NP::maximum_number_of_iterations(request.iteration_cap))));
+                            NP::combine(NP::maximum_number_of_iterations(request.iteration_cap),
+                                        NP::time_limit(request.time_limit > 0
+                                                         ? request.time_limit
+                                                         : std::numeric_limits<double>::infinity())))));
   Function_visitor visitor{&request.progress};
   const auto with_visitor = NP::combine(
     NP::bijective(request.bijective), NP::combine(CGAL::parameters::visitor(std::ref(visitor)), common));

@@ -7,11 +7,21 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
+#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+#include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
+
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <boost/property_map/property_map.hpp>
 
+#include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -110,4 +120,202 @@ BOOST_AUTO_TEST_CASE(restarting_from_the_result_changes_nothing_and_the_cap_is_h
   BOOST_TEST(capped.iterations == 2u);
   BOOST_TEST(capped.distortion > first.distortion);
   BOOST_TEST(SMSO::number_of_flipped_triangles(sm2, uv2) == 0u);
+}
+
+namespace {
+
+// Twice the smallest UV area over twice the UV area of the map (one chart),
+// and E_SD at the optimal uniform scale, computed here from the written map.
+struct Map_figures { double min_area_ratio; double e_sd_optimal; std::size_t flipped; };
+
+Map_figures figures_of(const Surface_mesh& sm, const decltype(std::declval<Surface_mesh&>().add_property_map<halfedge_descriptor, Point_2>("").first)& uv)
+{
+  double total = 0, smallest = std::numeric_limits<double>::infinity(), a = 0, b = 0, area = 0;
+  std::size_t flipped = 0;
+  for(auto f : sm.faces())
+  {
+    const auto h = sm.halfedge(f);
+    const auto hs = std::array<halfedge_descriptor, 3>{h, sm.next(h), sm.next(sm.next(h))};
+    const Point_2 p0 = uv[hs[0]], p1 = uv[hs[1]], p2 = uv[hs[2]];
+    const auto& q0 = sm.point(sm.target(hs[0]));
+    const auto& q1 = sm.point(sm.target(hs[1]));
+    const auto& q2 = sm.point(sm.target(hs[2]));
+    const double uv_area2 = (p1.x() - p0.x()) * (p2.y() - p0.y()) - (p1.y() - p0.y()) * (p2.x() - p0.x());
+    total += uv_area2;
+    smallest = (std::min)(smallest, uv_area2);
+    if(!(uv_area2 > 0)) ++flipped;
+    // J^T J from the 3D and UV edge vectors (first fundamental forms)
+    const K::Vector_3 e1 = q1 - q0, e2 = q2 - q0;
+    const double A3 = 0.5 * std::sqrt(CGAL::cross_product(e1, e2).squared_length());
+    const double l1 = std::sqrt(e1.squared_length()), x2 = e1 * e2 / l1;
+    const double y2 = std::sqrt((std::max)(0., e2.squared_length() - x2 * x2));
+    // J = [u1 - u0, u2 - u0] Dm^-1, Dm = [[l1, x2], [0, y2]]
+    const double d1x = p1.x() - p0.x(), d1y = p1.y() - p0.y(), d2x = p2.x() - p0.x(), d2y = p2.y() - p0.y();
+    const double j00 = d1x / l1, j10 = d1y / l1;
+    const double j01 = (d2x - j00 * x2) / y2, j11 = (d2y - j10 * x2) / y2;
+    const double n2 = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+    a += A3 * n2;
+    b += A3 * n2 / (det * det);
+    area += A3;
+  }
+  return Map_figures{smallest / total, 2 * std::sqrt(a * b) / area, flipped};
+}
+
+typedef SMSO::Seam_mesh_maker<Surface_mesh>::Seam_mesh Seam_mesh;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+// A map of one of Surface_mesh_parameterization's parameterizers, per corner.
+template <typename Parameterizer, typename UVMap>
+void parameterizer_map(Surface_mesh& sm, UVMap uv)
+{
+  auto seams = sm.add_property_map<edge_descriptor, bool>("e:smp_seam", false).first;
+  SMSO::Seam_mesh_maker<Surface_mesh> maker(sm, seams);
+  auto seam_uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:smp_uv").first;
+  Parameterizer parameterizer;
+  BOOST_REQUIRE(SMP::parameterize(maker.seam_mesh(), parameterizer, maker.border_halfedge(*sm.faces().begin()),
+                                  seam_uv) == SMP::OK);
+  SMSO::seam_mesh_uv_map_to_corner_uv_map(maker.seam_mesh(), seam_uv, uv);
+}
+
+} // namespace
+
+// ARAP is no barrier: the flip-free bound alone let the descent squeeze
+// a triangle that wanted to flip to area ratio 5e-16 (E_SD 6e27), status OK.
+BOOST_AUTO_TEST_CASE(arap_never_collapses_a_triangle)
+{
+  Surface_mesh sm = read_mesh<Surface_mesh>("cat_f1500.obj");
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const auto r = SMSO::minimize_distortion(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()));
+  BOOST_TEST_MESSAGE("cat, ARAP: " << SMSO::get_error_code_name(r.status) << ", E_SD " << r.distortion << ", "
+                     << r.iterations << " iterations");
+  // a valid map, not an error: the line search keeps every triangle above its area floor
+  BOOST_REQUIRE(r.status == SMSO::OK);
+  const Map_figures m = figures_of(sm, uv);
+  BOOST_TEST(m.flipped == 0u);
+  BOOST_TEST(m.min_area_ratio > 1e-7); // the floor: 1e-3 of the mean ratio (1500 faces)
+  BOOST_TEST(std::isfinite(r.distortion));
+  BOOST_TEST(r.distortion < 1e4);
+  BOOST_TEST(std::abs(SMSO::distortion(sm, uv) - r.distortion) <= 1e-9 * r.distortion);
+}
+
+// MIPS is scale invariant: its map shrinks while it is minimized, and the
+// bound is judged on E_SD at the optimal uniform scale (closed form).
+BOOST_AUTO_TEST_CASE(a_scale_invariant_energy_is_judged_at_the_optimal_scale)
+{
+  Surface_mesh sm = read_mesh<Surface_mesh>("cat_f1500.obj");
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const auto r = SMSO::minimize_distortion(sm, uv, SMSO_np::energy(SMSO::Conformal_energy()));
+  BOOST_REQUIRE(r.has_result());
+  const Map_figures m = figures_of(sm, uv);
+  BOOST_TEST_MESSAGE("cat, MIPS: E_SD " << r.distortion << " raw, " << r.distortion_at_optimal_scale
+                     << " at scale " << r.optimal_scale << " (here: " << m.e_sd_optimal << ")");
+  BOOST_TEST(m.flipped == 0u);
+  BOOST_TEST(std::abs(m.e_sd_optimal - r.distortion_at_optimal_scale) <= 1e-6 * m.e_sd_optimal);
+  BOOST_TEST(r.distortion > 10 * r.distortion_at_optimal_scale); // the raw figure means nothing here
+  BOOST_TEST(r.bound_met == (r.distortion_at_optimal_scale <= 4.1));
+  const auto loose = SMSO::minimize_distortion(
+    sm, uv, SMSO_np::combine(SMSO_np::energy(SMSO::Conformal_energy()), SMSO_np::use_uv_map_as_initial(true),
+                             SMSO_np::distortion_bound(1.01 * r.distortion_at_optimal_scale)));
+  BOOST_TEST(loose.bound_met); // judged at the scale, though E_SD as written is far above
+  BOOST_TEST(loose.distortion > 1.01 * r.distortion_at_optimal_scale);
+}
+
+BOOST_AUTO_TEST_CASE(the_time_limit_stops_with_a_valid_result)
+{
+  Surface_mesh sm = read_mesh<Surface_mesh>("bimba_i_f10000.obj");
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const auto r = SMSO::minimize_distortion(sm, uv, SMSO_np::time_limit(0.02));
+  BOOST_TEST_MESSAGE("bimba, 0.02 s: " << r.iterations << " iterations, E_SD " << r.distortion);
+  BOOST_TEST(r.status == SMSO::WARNING_TIME_LIMIT);
+  BOOST_TEST(r.has_result());
+  BOOST_TEST(std::string(SMSO::get_error_message(r.status)) == "Time limit reached: best result so far");
+  BOOST_TEST(r.iterations < 19u); // the full run's
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+  BOOST_TEST(std::abs(SMSO::distortion(sm, uv) - r.distortion) <= 1e-9 * r.distortion);
+  BOOST_TEST(r.bound_met == (r.distortion <= 4.1));
+  BOOST_TEST(r.distortion > 7.65); // not yet at the optimum 7.644
+
+  Surface_mesh sm2 = read_mesh<Surface_mesh>("bishop_part_f1000.obj");
+  auto uv2 = sm2.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  for(double bad : {0., -1., std::numeric_limits<double>::quiet_NaN()})
+  {
+    const auto e = SMSO::minimize_distortion(sm2, uv2, SMSO_np::time_limit(bad));
+    BOOST_TEST(e.status == SMSO::ERROR_WRONG_PARAMETER);
+  }
+}
+
+// Maps of CGAL's ARAP and LSCM parameterizers fold here and there; with
+// use_uv_map_as_initial they are untangled (or replaced) and then optimized.
+template <typename Parameterizer>
+void check_parameterizer_map(const std::string& name, bool expect_untangled)
+{
+  Surface_mesh sm = read_mesh<Surface_mesh>(name);
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  parameterizer_map<Parameterizer>(sm, uv);
+  const std::size_t flipped = SMSO::number_of_flipped_triangles(sm, uv);
+  BOOST_TEST_MESSAGE(name << ": " << flipped << " flipped triangles in the parameterizer's map");
+  BOOST_TEST(flipped > 0u); // what is to be shown
+
+  Surface_mesh copy = sm;
+  auto uv_copy = copy.property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const auto d = SMSO::minimize_distortion(copy, uv_copy, SMSO_np::use_uv_map_as_initial(true));
+  BOOST_TEST_MESSAGE("  minimize_distortion: " << SMSO::get_error_code_name(d.status) << ", " << d.message
+                     << ", E_SD " << d.distortion);
+  BOOST_TEST(d.status == SMSO::OK);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(copy, uv_copy) == 0u);
+  const std::string said = expect_untangled ? std::to_string(flipped) + " flipped or degenerate triangles of the "
+                                                                        "initial UV map untangled"
+                                            : "fell back to the default initial map";
+  BOOST_TEST(d.message.find(said) != std::string::npos, d.message);
+
+  const auto s = SMSO::optimize_seams(sm, uv, SMSO_np::combine(SMSO_np::use_uv_map_as_initial(true),
+                                                               SMSO_np::bijective(false),
+                                                               SMSO_np::number_of_recut_rounds(0)));
+  BOOST_TEST_MESSAGE("  optimize_seams: " << SMSO::get_error_code_name(s.status) << ", E_SD " << s.distortion
+                     << ", seams " << s.seam_length_normalized);
+  BOOST_TEST(s.status == SMSO::OK);
+  BOOST_TEST(s.bound_met);
+  BOOST_TEST(SMSO::distortion(sm, uv) <= 4.1);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+  BOOST_TEST(s.message.find(said) != std::string::npos, s.message);
+}
+
+BOOST_AUTO_TEST_CASE(arap_parameterizer_maps_are_untangled)
+{
+  check_parameterizer_map<SMP::ARAP_parameterizer_3<Seam_mesh> >("cat_f1500.obj", true);
+}
+
+BOOST_AUTO_TEST_CASE(lscm_parameterizer_maps_are_untangled)
+{
+  check_parameterizer_map<SMP::LSCM_parameterizer_3<Seam_mesh> >("cat_f1500.obj", true);
+}
+
+// A folded vertex in a given map (moved just across the opposite edge of
+// one of its triangles): untangled, and the message counts the triangles.
+BOOST_AUTO_TEST_CASE(a_degenerate_initial_triangle_is_untangled)
+{
+  Surface_mesh sm = read_mesh<Surface_mesh>("cat_f1500.obj");
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  BOOST_REQUIRE(SMSO::minimize_distortion(sm, uv).status == SMSO::OK);
+  halfedge_descriptor h;
+  for(auto f : sm.faces())
+  {
+    h = sm.halfedge(f);
+    if(!sm.is_border(sm.target(h))) break;
+  }
+  const Point_2 a = uv[sm.next(h)], b = uv[sm.next(sm.next(h))], c = uv[h];
+  const Point_2 mid((a.x() + b.x()) / 2 + 0.05 * ((a.x() + b.x()) / 2 - c.x()),
+                    (a.y() + b.y()) / 2 + 0.05 * ((a.y() + b.y()) / 2 - c.y()));
+  for(auto g : CGAL::halfedges_around_target(h, sm)) // one UV per vertex: a disk without seams
+    if(!sm.is_border(g)) uv[g] = mid;
+  const std::size_t flipped = SMSO::number_of_flipped_triangles(sm, uv);
+  BOOST_TEST(flipped >= 1u);
+  const auto r = SMSO::minimize_distortion(sm, uv, SMSO_np::use_uv_map_as_initial(true));
+  BOOST_TEST_MESSAGE("degenerate vertex: " << flipped << " invalid, " << r.message);
+  BOOST_TEST(r.status == SMSO::OK);
+  BOOST_TEST(r.message.find(" flipped or degenerate triangles of the initial UV map untangled") != std::string::npos,
+             r.message);
+  BOOST_TEST(std::stoul(r.message) >= flipped);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+  BOOST_TEST(std::abs(r.distortion - 6.52866) < 1e-4); // the optimum of the cat with its seams fixed
 }

@@ -268,6 +268,39 @@ BOOST_AUTO_TEST_CASE(the_visitor_sees_progress_and_can_cancel)
   BOOST_TEST(s.result.has_result());
 }
 
+// time_limit: a distinct status, the best result so far written and valid
+// (the cat needs several seconds in bound mode).
+BOOST_AUTO_TEST_CASE(the_time_limit_stops_with_the_best_result_so_far)
+{
+  Run r;
+  run("cat_f1500.obj", r, SMSO_np::time_limit(0.3));
+  BOOST_TEST(r.result.status == SMSO::WARNING_TIME_LIMIT);
+  BOOST_TEST(r.result.has_result());
+  BOOST_TEST(r.result.seconds < 3.);
+  const SMSO::Uv_map_measures m = SMSO::measure_uv_map(r.sm, r.uv);
+  BOOST_TEST(m.flipped_triangles == 0u);
+  BOOST_TEST(m.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(std::abs(m.distortion - r.result.distortion) <= 1e-9 * r.result.distortion);
+  BOOST_TEST(r.result.bound_met == (r.result.distortion <= 4.1));
+
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", sm));
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  SMSO::Seam_optimizer<Surface_mesh> optimizer(sm, uv, SMSO_np::time_limit(0.3));
+  std::size_t steps = 0;
+  while(optimizer.step()) ++steps;
+  const SMSO::Optimization_result o = optimizer.result();
+  BOOST_TEST_MESSAGE("Seam_optimizer, 0.3 s: " << steps << " steps, " << SMSO::get_error_code_name(o.status));
+  BOOST_TEST(o.status == SMSO::WARNING_TIME_LIMIT);
+  optimizer.write_uv_map(uv);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+  BOOST_TEST(o.bound_met == (o.distortion <= 4.1));
+
+  Run bad;
+  run("cat_f1500.obj", bad, SMSO_np::time_limit(-1.));
+  BOOST_TEST(bad.result.status == SMSO::ERROR_WRONG_PARAMETER);
+}
+
 BOOST_AUTO_TEST_CASE(stepping_the_class_gives_the_free_function_result)
 {
   Run reference;

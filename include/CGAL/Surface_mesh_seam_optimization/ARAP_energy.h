@@ -22,10 +22,16 @@ namespace Surface_mesh_seam_optimization {
 ///
 /// Unlike `Symmetric_Dirichlet_energy` it is not a barrier: it stays bounded
 /// as a triangle degenerates, so nothing in the energy itself prevents
-/// flips. Flip-freeness comes from the optimizer's line search, which never
-/// accepts a step that makes a UV triangle's signed area non-positive. For
-/// consistency with the other models, the value is \f$+\infty\f$ for
-/// \f$\det(J) \le 0\f$.
+/// flips or collapses. The optimizer's line search keeps, for an energy that
+/// is no barrier, every UV triangle's area above a floor (a thousandth of
+/// its area at the map's mean area ratio, or half its initial area if that
+/// is smaller): a triangle that ARAP would flip is left thin, never flipped
+/// or degenerate. For consistency with the other models, the value is
+/// \f$+\infty\f$ for \f$\det(J) \le 0\f$.
+///
+/// The energy fixes the scale (isometries are its minima), so the
+/// distortion bound is judged on E_SD of the map as it is written
+/// (`Optimization_result::distortion`); a thin triangle makes that large.
 ///
 /// \cgalModels `DistortionEnergy`
 class ARAP_energy

@@ -20,7 +20,11 @@ namespace Surface_mesh_seam_optimization {
 /// \f$ \psi(J) = \sigma_1 / \sigma_2 + \sigma_2 / \sigma_1 = \|J\|_F^2 / \det(J) \f$.
 /// It measures angle distortion only: it is scale invariant, equals 2 at
 /// every similarity, and is a barrier (\f$+\infty\f$ for \f$\det(J) \le 0\f$).
-/// Because scaling is free, a chart's size is not controlled by this energy.
+/// Because scaling is free, a chart's size is not controlled by this energy
+/// (a map can shrink a thousandfold while it is minimized), so the
+/// distortion bound is judged on E_SD at the map's optimal uniform scale
+/// (`Optimization_result::distortion_at_optimal_scale`), not on the map as
+/// it is written (`Optimization_result::distortion`).
 ///
 /// \cgalModels `DistortionEnergy`
 class Conformal_energy
@@ -44,6 +48,9 @@ public:
 
   /// Identifier of the energy.
   const char* name() const { return "mips"; }
+
+  /// The energy does not change when the map is scaled: the bound is judged at the optimal scale.
+  static constexpr bool is_scale_invariant() { return true; }
 
   /// \cond SKIP_IN_MANUAL
   // Derivatives with respect to the singular values (requires s1, s2 > 0).

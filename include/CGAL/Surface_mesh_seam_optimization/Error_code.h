@@ -10,9 +10,10 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// Result codes. `OK` and the `WARNING_*` codes mean a valid (flip-free)
-/// result was written into the user's maps; every `ERROR_*` code means the
-/// user's maps were left untouched.
+/// Result codes. `OK` and the `WARNING_*` codes mean a valid result (no
+/// flipped and no degenerate UV triangle, checked before writing) was written
+/// into the user's maps; every `ERROR_*` code means the user's maps were left
+/// untouched. New codes are appended, so the values of the others do not change.
 enum Error_code
 {
   OK = 0,                            ///< success
@@ -30,14 +31,16 @@ enum Error_code
   ERROR_INITIAL_PARAMETERIZATION,    ///< no valid initial map could be computed
   ERROR_LINEAR_SOLVER,               ///< the sparse linear solver failed
   ERROR_WRONG_PARAMETER,             ///< a named parameter has an invalid value
-  ERROR_OVERLAPPING_UV_MAP           ///< `bijective` was asked for, but the given UV map overlaps itself
+  ERROR_OVERLAPPING_UV_MAP,          ///< `bijective` was asked for, but the given UV map overlaps itself
+  WARNING_TIME_LIMIT,                ///< the `time_limit` was reached; best result so far written
+  ERROR_DEGENERATE_UV_RESULT         ///< the optimized map has a flipped or (numerically) degenerate triangle: not written
 };
 
 /// true when the code means that a result was written
 inline bool has_result(Error_code code)
 {
   return code == OK || code == WARNING_MAXIMUM_ITERATIONS ||
-         code == WARNING_CANCELLED || code == WARNING_BOUND_NOT_MET;
+         code == WARNING_CANCELLED || code == WARNING_BOUND_NOT_MET || code == WARNING_TIME_LIMIT;
 }
 
 /// A short English message for `code` (a `switch`, so it cannot go out of sync).
@@ -61,6 +64,8 @@ inline const char* get_error_message(Error_code code)
     case ERROR_LINEAR_SOLVER: return "The sparse linear solver failed";
     case ERROR_WRONG_PARAMETER: return "A parameter has an invalid value";
     case ERROR_OVERLAPPING_UV_MAP: return "The given UV map overlaps itself (pass bijective(false) to accept it)";
+    case WARNING_TIME_LIMIT: return "Time limit reached: best result so far";
+    case ERROR_DEGENERATE_UV_RESULT: return "The optimized UV map has a flipped or degenerate triangle";
   }
   return "Unknown error";
 }
@@ -86,6 +91,8 @@ inline const char* get_error_code_name(Error_code code)
     case ERROR_LINEAR_SOLVER: return "ERROR_LINEAR_SOLVER";
     case ERROR_WRONG_PARAMETER: return "ERROR_WRONG_PARAMETER";
     case ERROR_OVERLAPPING_UV_MAP: return "ERROR_OVERLAPPING_UV_MAP";
+    case WARNING_TIME_LIMIT: return "WARNING_TIME_LIMIT";
+    case ERROR_DEGENERATE_UV_RESULT: return "ERROR_DEGENERATE_UV_RESULT";
   }
   return "ERROR_UNKNOWN";
 }

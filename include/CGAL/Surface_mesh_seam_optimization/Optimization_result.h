@@ -36,8 +36,15 @@ struct Optimization_timings
 struct Optimization_result
 {
   Error_code status = ERROR_WRONG_PARAMETER;
-  std::string message;              ///< details of an error (which face, which parameter)
-  double distortion = std::numeric_limits<double>::infinity(); ///< E_SD of the result (>= 4)
+  std::string message;              ///< details of an error (which face, which parameter), or a note on the input (an untangled initial map)
+  double distortion = std::numeric_limits<double>::infinity(); ///< E_SD of the result as written (>= 4)
+  /// E_SD of the result scaled uniformly by `optimal_scale`, the factor that
+  /// minimizes it (closed form: with \f$a = \sum A_t(\sigma_1^2+\sigma_2^2)\f$ and
+  /// \f$b = \sum A_t(\sigma_1^{-2}+\sigma_2^{-2})\f$, \f$s^4 = b/a\f$ and the value is
+  /// \f$2\sqrt{ab}/A\f$); the figure the bound is judged on for a scale-invariant
+  /// energy (`Conformal_energy`), whose map has no meaningful scale
+  double distortion_at_optimal_scale = std::numeric_limits<double>::infinity();
+  double optimal_scale = 1;         ///< see `distortion_at_optimal_scale`
   double initial_distortion = std::numeric_limits<double>::infinity();
   double seam_length = 0;           ///< 3D length of the seam edges, each once
   double seam_length_normalized = 0;///< seam_length / sqrt(area / pi)
@@ -45,7 +52,7 @@ struct Optimization_result
   std::size_t charts = 0;
   std::size_t iterations = 0;       ///< Newton iterations
   std::size_t topology_operations = 0;
-  bool bound_met = false;
+  bool bound_met = false;           ///< E_SD <= the bound (at the optimal scale for a scale-invariant energy)
   std::size_t overlapping_triangle_pairs = 0; ///< checked on the result, whether `bijective` was asked for or not
   bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew

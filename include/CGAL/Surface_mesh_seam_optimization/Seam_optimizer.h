@@ -61,6 +61,11 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
     return ERROR_WRONG_PARAMETER;
   }
   settings.recut_rounds = rounds;
+  if(!read_time_limit(np, settings.time_limit))
+  {
+    message = "time_limit must be > 0 seconds";
+    return ERROR_WRONG_PARAMETER;
+  }
 
   Error_code ec = initialize_cut_mesh(tm, uvmap, np, cm, copy, message);
   if(ec != OK) return ec;
@@ -104,7 +109,8 @@ class Seam_optimizer
   typedef internal::Alternating_optimization<Energy, SolverTraits, Default_seam_optimization_visitor> Core;
 
 public:
-  /// Takes the same named parameters as `optimize_seams()` (but `visitor`);
+  /// Takes the same named parameters as `optimize_seams()` (but `visitor`;
+  /// `time_limit` counts from the construction, which runs the first descent);
   /// `uvmap` is read only with `use_uv_map_as_initial(true)`.
   template <typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
   Seam_optimizer(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
@@ -122,6 +128,8 @@ public:
     m_status = m_core->start();
     if(m_status == ERROR_OVERLAPPING_UV_MAP) m_message = internal::overlapping_initial_map_message();
     m_running = (m_status == OK);
+    // (the first descent already hit the iteration cap or the time limit: as optimize_seams() does)
+    if(!m_running && has_result(m_status)) end(m_status);
   }
 
   Seam_optimizer(const Seam_optimizer&) = delete;
@@ -140,11 +148,7 @@ public:
   bool step()
   {
     if(!m_running) return false;
-    if(!m_core->step(m_status))
-    {
-      m_status = m_core->finish(m_status);
-      m_running = false;
-    }
+    if(!m_core->step(m_status)) end(m_status);
     return m_running;
   }
 
@@ -162,27 +166,29 @@ public:
     r.status = m_status;
     r.message = m_message;
     if(!m_core) return r;
-    internal::measure_result(m_cm, r);
+    internal::measure_result(m_cm, m_energy, m_settings.distortion_bound, r);
+    if(m_settings.fixed_lambda) r.bound_met = false;
     r.initial_distortion = m_initial_distortion;
     r.lambda = m_core->lambda();
     r.iterations = m_core->iterations();
     r.topology_operations = m_core->topology_operations();
     r.scaffold_rebuilds = m_core->scaffold_rebuilds();
     r.timings = m_core->timings();
-    r.bound_met = m_settings.fixed_lambda ? false : r.distortion <= m_settings.distortion_bound;
     r.seconds = m_timer.time();
     return r;
   }
 
-  double distortion() const { return internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data()); }
+  /// E_SD of the current map as the bound judges it (at the optimal uniform scale for a scale-invariant energy)
+  double distortion() const { return internal::judged_distortion(m_cm, m_energy, m_cm.uv.data()); }
   double seam_length_normalized() const { return m_cm.seam_length() / m_cm.normalization_radius(); }
   double lambda() const { return m_core ? m_core->lambda() : 0.; }
 
-  /// Writes the current UV map (every halfedge with a face).
+  /// Writes the current UV map (every halfedge with a face); nothing after
+  /// the run ended with `ERROR_DEGENERATE_UV_RESULT`.
   template <typename UVMap>
   void write_uv_map(UVMap uvmap) const
   {
-    if(m_core) internal::write_uv_map(m_cm, m_copy, uvmap);
+    if(m_core && m_status != ERROR_DEGENERATE_UV_RESULT) internal::write_uv_map(m_cm, m_copy, uvmap);
   }
   /// Writes the current seams (every edge).
   template <typename EdgeSeamMap>
@@ -192,6 +198,15 @@ public:
   }
 
 private:
+  // The run is over: the best result restored, and checked as optimize_seams() checks it.
+  void end(Error_code status)
+  {
+    m_status = m_core->finish(status);
+    m_running = false;
+    if(has_result(m_status) && internal::count_invalid_uv_triangles(m_cm, &m_message) > 0)
+      m_status = ERROR_DEGENERATE_UV_RESULT;
+  }
+
   const TriangleMesh& m_tm;
   Energy m_energy;
   internal::Cut_mesh m_cm;

@@ -23,6 +23,10 @@ namespace Surface_mesh_seam_optimization {
 /// It penalizes both stretch and compression, equals 4 exactly at rotations,
 /// and is a barrier: it tends to \f$+\infty\f$ as a triangle degenerates and
 /// is \f$+\infty\f$ for \f$\det(J) \le 0\f$.
+/// The distortion bound of `optimize_seams()` is a bound on this energy's
+/// mean, E_SD, of the map as it is written; minimizing it also optimizes the
+/// scale, so at a converged result E_SD at the optimal uniform scale is the
+/// same but for the stopping tolerance.
 ///
 /// \cgalModels `DistortionEnergy`
 class Symmetric_Dirichlet_energy

@@ -13,10 +13,13 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_maps.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Untangle.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <chrono>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,10 +27,14 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-// Fills the figures of `r` (E_SD, seams, charts) from the core mesh.
-inline void measure_result(const Cut_mesh& cm, Optimization_result& r)
+// Fills the figures of `r` (E_SD, seams, charts) from the core mesh; the
+// bound is judged as judged_distortion() says for `energy`.
+template <typename Energy>
+void measure_result(const Cut_mesh& cm, const Energy& energy, double bound, Optimization_result& r)
 {
   r.distortion = total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
+  r.distortion_at_optimal_scale = symmetric_dirichlet_at_optimal_scale(cm, cm.uv.data(), &r.optimal_scale);
+  r.bound_met = judged_distortion(cm, energy, cm.uv.data()) <= bound;
   r.seam_length = cm.seam_length();
   r.seam_length_normalized = r.seam_length / cm.normalization_radius();
   std::vector<int> chart;
@@ -61,16 +68,26 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
   std::vector<char> seam;
   std::vector<double> corner_uvs;
 
-  if(use_input)
-  {
-    ec = read_uv_map(tm, uvmap, copy, corner_uvs, message);
-    if(ec != OK) return ec;
-    if constexpr(has_seam_map)
-      read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
+  // the default initial map, cut along `scratch_seams` (and more, if needed)
+  auto compute_default = [&](auto scratch_seams) -> Error_code {
+    auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
+    if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::geom_traits_t>::value)
+      ec = initial_parameterization(
+        tm, scratch_seams, scratch_uv,
+        CGAL::parameters::vertex_point_map(vpm).geom_traits(get_parameter(np, CGAL::internal_np::geom_traits)),
+        message);
     else
-      seams_from_corner_uvs(cm, corner_uvs, seam);
-  }
-  else
+      ec = initial_parameterization(tm, scratch_seams, scratch_uv, CGAL::parameters::vertex_point_map(vpm), message);
+    if(ec != OK) { message = "could not compute the initial map: " + message; return ec; }
+    read_seam_map(tm, scratch_seams, copy, cm, seam);
+    ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
+    if(ec != OK) return ec;
+    label_uv_vertices(cm, seam);
+    set_uvs_from_corners(cm, corner_uvs);
+    return OK;
+  };
+
+  if(!use_input)
   {
     auto scratch_seams = make_edge_vector_map<bool>(tm, false);
     if constexpr(has_seam_map)
@@ -78,29 +95,48 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
       auto user_seams = get_parameter(np, internal_np::edge_is_seam_map);
       for(auto e : edges(tm)) put(scratch_seams, e, bool(get(user_seams, e)));
     }
-    auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
-    if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::geom_traits_t>::value)
-      ec = compute_initial_parameterization(
-        tm, scratch_seams, scratch_uv,
-        CGAL::parameters::vertex_point_map(vpm).geom_traits(get_parameter(np, CGAL::internal_np::geom_traits)));
-    else
-      ec = compute_initial_parameterization(tm, scratch_seams, scratch_uv, CGAL::parameters::vertex_point_map(vpm));
-    if(ec != OK) { message = "could not compute the initial map"; return ec; }
-    read_seam_map(tm, scratch_seams, copy, cm, seam);
-    ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
+    ec = compute_default(scratch_seams);
     if(ec != OK) return ec;
+    for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+      if(!(cm.signed_uv_area2(f) > 0))
+      {
+        message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
+        return ERROR_FLIPPED_UV_TRIANGLE;
+      }
+    return OK;
   }
+
+  ec = read_uv_map(tm, uvmap, copy, corner_uvs, message);
+  if(ec != OK) return ec;
+  if constexpr(has_seam_map)
+    read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
+  else
+    seams_from_corner_uvs(cm, corner_uvs, seam);
   label_uv_vertices(cm, seam);
   set_uvs_from_corners(cm, corner_uvs);
 
-  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+  // Maps of Surface_mesh_parameterization's LSCM and ARAP parameterizers
+  // usually fold a little: untangled locally, or replaced by the default map.
+  std::string which;
+  if(count_invalid_uv_triangles(cm, &which) == 0) return OK;
+  std::size_t count = 0;
+  if(untangle_uv_map(cm, count))
   {
-    if(!(cm.signed_uv_area2(f) > 0))
-    {
-      message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
-      return ERROR_FLIPPED_UV_TRIANGLE;
-    }
+    message = std::to_string(count) + " flipped or degenerate triangles of the initial UV map untangled";
+    return OK;
   }
+  auto scratch_seams = make_edge_vector_map<bool>(tm, false);
+  for(std::size_t h = 0; h < seam.size(); ++h)
+    if(seam[h]) put(scratch_seams, edge(copy.corner_halfedge[h], tm), true);
+  std::string default_message;
+  std::swap(default_message, message);
+  if(compute_default(scratch_seams) != OK || count_invalid_uv_triangles(cm) > 0)
+  {
+    message = which + " (and neither untangling it nor the default initial map with its seams worked)";
+    return ERROR_FLIPPED_UV_TRIANGLE;
+  }
+  message = std::to_string(count) + " flipped or degenerate triangles of the initial UV map could not be "
+            "untangled: fell back to the default initial map";
   return OK;
 }
 
@@ -138,7 +174,12 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///     \cgalParamDefault{no seam map: seams implied by the UV map, or none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_uv_map_as_initial}
-///     \cgalParamDescription{start from the UVs in `uvmap` (validated: finite, no flipped triangle)}
+///     \cgalParamDescription{start from the UVs in `uvmap` (validated: finite). Flipped or degenerate
+///       triangles (as in maps of `ARAP_parameterizer_3` or `LSCM_parameterizer_3`) are untangled
+///       first: the region around them, grown ring by ring, is re-mapped by Tutte's embedding with its
+///       border fixed; if no region works, the default initial map with the same seams is used.
+///       `Optimization_result::message` says which ("k flipped or degenerate triangles of the initial
+///       UV map untangled", or "... fell back to the default initial map")}
 ///     \cgalParamDefault{`false`: circle boundary + Tutte per chart}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{energy}
@@ -157,10 +198,23 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///     \cgalParamDescription{stop when the scale-free squared gradient norm falls below it}
 ///     \cgalParamDefault{`1e-12`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{time_limit}
+///     \cgalParamDescription{seconds (> 0) after which the descent stops with the map it has reached,
+///       status `WARNING_TIME_LIMIT` (a result is written)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{not enforced here: `Optimization_result::bound_met` says whether the result
+///       meets it (E_SD at the optimal uniform scale for a scale-invariant energy)}
+///     \cgalParamDefault{`4.1`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \return the status (the user's maps are untouched unless `has_result()`),
-///   E_SD of the result, seam length, charts, iterations.
+/// \return the status (the user's maps are untouched unless `has_result()`;
+///   a result with a flipped or degenerate triangle is never written:
+///   `ERROR_DEGENERATE_UV_RESULT`), E_SD of the result (as written and at its
+///   optimal uniform scale), seam length, charts, iterations.
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
@@ -187,6 +241,14 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
     result.message = "gradient_tolerance must be >= 0";
     return result;
   }
+  double time_limit = 0;
+  if(!internal::read_time_limit(np, time_limit))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    result.message = "time_limit must be > 0 seconds";
+    return result;
+  }
+  const internal::Deadline deadline(time_limit);
 
   internal::Cut_mesh cm;
   internal::Face_graph_copy<TriangleMesh> copy;
@@ -207,6 +269,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   result.status = WARNING_MAXIMUM_ITERATIONS;
   while(newton.iterations() < max_iterations)
   {
+    if(deadline.reached()) { result.status = WARNING_TIME_LIMIT; break; }
     const internal::Newton_status s = newton.step();
     if(s == internal::NEWTON_CONVERGED) { result.status = OK; break; }
     if(s == internal::NEWTON_SOLVER_FAILED)
@@ -218,13 +281,18 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   }
   result.iterations = newton.iterations();
   result.timings = newton.timings();
+  // (the line search never allows it: a last check before anything is written)
+  if(internal::count_invalid_uv_triangles(cm, &result.message) > 0)
+  {
+    result.status = ERROR_DEGENERATE_UV_RESULT;
+    return result;
+  }
 
   internal::write_uv_map(cm, copy, uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  internal::measure_result(cm, result);
   // no bound is enforced here; say whether the result meets the one given (default 4.1)
-  result.bound_met = result.distortion <= choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1);
+  internal::measure_result(cm, energy, choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1), result);
   result.seconds = timer.time();
   return result;
 }

@@ -29,7 +29,7 @@ namespace Surface_mesh_seam_optimization {
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{distortion_bound}
-///     \cgalParamDescription{bound on E_SD; the result meets it with the shortest seams found}
+///     \cgalParamDescription{bound on E_SD (see below for the scale); the result meets it with the shortest seams found}
 ///     \cgalParamDefault{`4.1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{seam_weight}
@@ -52,7 +52,9 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamDefault{all 1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_uv_map_as_initial}
-///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply}
+///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply; flipped or degenerate
+///       triangles are untangled first, as in `minimize_distortion()`, and `Optimization_result::message`
+///       says so}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
@@ -89,7 +91,19 @@ namespace Surface_mesh_seam_optimization {
 ///       Reaching `maximum_number_of_iterations` during these rounds ends them with status `OK`}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{time_limit}
+///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
+///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+///
+/// The bound is on E_SD of the map as written, but for a scale-invariant
+/// energy (`Conformal_energy`), where it is judged at the map's optimal
+/// uniform scale (`Optimization_result::distortion_at_optimal_scale`).
+/// A result with a flipped or degenerate UV triangle is never written
+/// (`ERROR_DEGENERATE_UV_RESULT`).
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
@@ -129,16 +143,21 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     return result;
   }
 
+  // (a last check before anything is written)
+  if(internal::count_invalid_uv_triangles(cm, &result.message) > 0)
+  {
+    result.status = ERROR_DEGENERATE_UV_RESULT;
+    return result;
+  }
   internal::write_uv_map(cm, copy, uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  internal::measure_result(cm, result);
+  internal::measure_result(cm, energy, settings.distortion_bound, result);
   result.lambda = optimizer.lambda();
   result.iterations = optimizer.iterations();
   result.topology_operations = optimizer.topology_operations();
   result.scaffold_rebuilds = optimizer.scaffold_rebuilds();
   result.timings = optimizer.timings();
-  result.bound_met = result.distortion <= settings.distortion_bound;
   result.seconds = timer.time();
   return result;
 }

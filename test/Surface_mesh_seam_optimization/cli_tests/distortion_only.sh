@@ -60,4 +60,31 @@ grep -q "warning: Maximum number of iterations" err.txt || fail "no warning abou
 rc=$?
 [ "$rc" -eq 0 ] || fail "--quiet run: exit code $rc"
 [ ! -s err.txt ] || fail "--quiet printed: $(cat err.txt)"
+
+# Issue 17: ARAP (no barrier) once squeezed a cat triangle to area ratio
+# 5e-16 (E_SD 6e27) and said OK; now a valid map (checked by uvmetrics). MIPS
+# is scale invariant: its figure is E_SD at the optimal scale, as uvmetrics'.
+UVM="$DATA/../../shared/tools/uvmetrics.py"
+for e in arap mips; do
+  "$BIN" "$DATA/cat_f1500.obj" --keep-seams --energy $e -o cat_$e.obj --report cat_$e.json >out.txt 2>err.txt
+  rc=$?
+  [ "$rc" -eq 0 ] || fail "--energy $e: exit code $rc (stderr: $(cat err.txt))"
+  [ -f "$UVM" ] || continue
+  python3 "$UVM" --json cat_$e.obj >m_$e.json 2>m.err || fail "uvmetrics failed: $(cat m.err)"
+  python3 - m_$e.json cat_$e.json $e <<'PY' || fail "--energy $e: report or map not as expected"
+import json, sys
+m, r, e = json.load(open(sys.argv[1])), json.load(open(sys.argv[2])), sys.argv[3]
+def check(cond, what):
+    if not cond:
+        sys.exit("FAIL: %s (report: %s)" % (what, json.dumps(r)))
+check(r["status"] == "OK", "status %r" % r["status"])
+check(m["flipped"] == 0 and m["degenerate"] == 0, "%d flipped, %d degenerate" % (m["flipped"], m["degenerate"]))
+check(m["e_sd"] is not None and abs(m["e_sd"] - r["e_sd"]) <= 1e-6 * r["e_sd"], "e_sd vs uvmetrics %r" % m["e_sd"])
+check(abs(m["e_sd_optimal_scale"] - r["e_sd_optimal_scale"]) <= 1e-6 * r["e_sd_optimal_scale"],
+      "e_sd_optimal_scale vs uvmetrics %r" % m["e_sd_optimal_scale"])
+if e == "mips":
+    check(r["e_sd"] > 10 * r["e_sd_optimal_scale"], "the MIPS map's own scale should be far from E_SD's")
+PY
+done
+grep -q "at the optimal scale" err.txt || fail "no optimal-scale figure on the summary line: $(cat err.txt)"
 echo "ok"

@@ -53,6 +53,7 @@ struct Alternating_settings
   double lambda = 0.999;            // initial (bound mode) or fixed value
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
   std::size_t max_iterations = 100000;
+  double time_limit = std::numeric_limits<double>::infinity(); // seconds from construction
   // bound mode: after the first result, unzip this fraction of the seams
   // where they buy least and alternate again, until a round finds nothing
   // shorter
@@ -78,7 +79,7 @@ public:
                            Visitor& visitor)
     : m_cm(cm), m_energy(energy), m_weight(halfedge_weight), m_settings(settings), m_visitor(visitor),
       m_newton(cm, energy, solver, settings.newton), m_topology(cm, energy, halfedge_weight),
-      m_lambda(settings.lambda)
+      m_lambda(settings.lambda), m_deadline(settings.time_limit)
   {
     m_timer.start();
   }
@@ -88,7 +89,8 @@ public:
   std::size_t topology_operations() const { return m_operations; }
   bool bound_met() const { return distortion() <= m_settings.distortion_bound; }
 
-  double distortion() const { return total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data()); }
+  // E_SD as the bound judges it (at the optimal scale for a scale-invariant energy)
+  double distortion() const { return judged_distortion(m_cm, m_energy, m_cm.uv.data()); }
   double seam_cost() const { return m_cm.seam_length(&m_weight) / m_cm.normalization_radius(); }
 
   Error_code run()
@@ -137,6 +139,7 @@ public:
   // `status` then says why (OK: converged).
   bool step(Error_code& status)
   {
+    if(m_deadline.reached()) { status = WARNING_TIME_LIMIT; return false; }
     if(!check_overlaps(status)) return false;
     const double e_sd = distortion();
     const double e_se = seam_cost();
@@ -190,7 +193,8 @@ public:
   {
     // whatever stopped a run without its scaffold, what it leaves does not overlap
     if(m_lazy && count_overlapping_pairs(m_cm, 1) > 0) restore_safe();
-    if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS)
+    if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS ||
+       status == WARNING_TIME_LIMIT)
     {
       record(distortion(), seam_cost());
       // Whatever stopped the alternation, the seams of the best feasible
@@ -198,7 +202,8 @@ public:
       if(status == OK && !m_settings.fixed_lambda && m_has_best && !m_best_polished)
       {
         status = polish_best();
-        if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS) return status;
+        if(status != OK && status != WARNING_CANCELLED && status != WARNING_MAXIMUM_ITERATIONS &&
+           status != WARNING_TIME_LIMIT) return status;
       }
       // Rounds from the best result: straighten its largest detour while
       // that finds shorter seams, else unzip; they end at the first
@@ -218,7 +223,7 @@ public:
         if(status == OK && !m_best_polished) status = polish_best();
         // the iteration cap ends the rounds, not the converged run they improve
         if(status == WARNING_MAXIMUM_ITERATIONS) { status = OK; break; }
-        if(status != OK && status != WARNING_CANCELLED) return status;
+        if(status != OK && status != WARNING_CANCELLED && status != WARNING_TIME_LIMIT) return status;
         const bool shorter = m_best_se < before;
         if(shorter) m_straightened.clear();
         if(!straightened && !shorter) break;
@@ -306,6 +311,7 @@ private:
     for(;;)
     {
       if(m_newton.iterations() >= m_settings.max_iterations) return WARNING_MAXIMUM_ITERATIONS;
+      if(m_deadline.reached()) return WARNING_TIME_LIMIT;
       const Newton_status s = m_newton.step();
       if(s == NEWTON_SOLVER_FAILED) return ERROR_LINEAR_SOLVER;
       // a squeezed scaffold blocks the charts' motion: mesh the space anew
@@ -843,6 +849,7 @@ private:
 #endif
   Scaffold m_scaffold;
   Optimization_timings m_timings; // topology and scaffold; Newton keeps its own
+  Deadline m_deadline;
   std::vector<double> m_x;
   std::size_t m_scaffold_rebuilds = 0, m_rejected = 0;
   std::size_t m_detached_faces = 0;

@@ -60,6 +60,23 @@ inline double max_flip_free_step(const Cut_mesh& cm, const double* uv, const dou
   return t;
 }
 
+// Largest t such that the triangle keeps twice its signed area >= `floor2`
+// on [0, t); 0 if it is already at or below the floor and the direction
+// shrinks it (a triangle may then only grow).
+inline double triangle_area_floor_step(const double* a, const double* b, const double* c,
+                                       const double* pa, const double* pb, const double* pc, double floor2)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  const double d1x = b[0] - a[0], d1y = b[1] - a[1], d2x = c[0] - a[0], d2y = c[1] - a[1];
+  const double q1x = pb[0] - pa[0], q1y = pb[1] - pa[1], q2x = pc[0] - pa[0], q2y = pc[1] - pa[1];
+  const double qa = q1x * q2y - q1y * q2x;
+  const double qb = d1x * q2y - d1y * q2x + q1x * d2y - q1y * d2x;
+  const double area2 = d1x * d2y - d1y * d2x;
+  if(area2 > floor2) return smallest_positive_root(qa, qb, area2 - floor2);
+  if(qb < 0 || (qb == 0 && qa < 0)) return 0.;
+  return qa < 0 ? -qb / qa : inf;
+}
+
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL

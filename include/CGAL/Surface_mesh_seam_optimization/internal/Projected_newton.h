@@ -11,6 +11,8 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PROJECTED_NEWTON_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
@@ -20,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <type_traits>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -45,6 +48,32 @@ private:
   std::chrono::steady_clock::time_point m_start;
 };
 
+// The `time_limit` named parameter: reached once that many seconds have
+// passed since construction; never with no limit (+inf).
+class Deadline
+{
+public:
+  explicit Deadline(double seconds = std::numeric_limits<double>::infinity())
+    : m_seconds(seconds), m_start(std::chrono::steady_clock::now()) {}
+  bool reached() const
+  {
+    return m_seconds < std::numeric_limits<double>::infinity() &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count() >= m_seconds;
+  }
+private:
+  double m_seconds;
+  std::chrono::steady_clock::time_point m_start;
+};
+
+// Reads `time_limit` (seconds > 0; default none); false if it is not valid.
+template <typename NamedParameters>
+bool read_time_limit(const NamedParameters& np, double& seconds)
+{
+  seconds = parameters::choose_parameter(parameters::get_parameter(np, internal_np::time_limit),
+                                         std::numeric_limits<double>::infinity());
+  return seconds > 0; // (NaN is not)
+}
+
 struct Newton_settings
 {
   // Stop when |g|^2 * A (scale-free) falls below this.
@@ -54,7 +83,48 @@ struct Newton_settings
   double armijo = 1e-4;
   // Fraction of the largest flip-free step taken at most.
   double flip_free_fraction = 0.99;
+  // An energy that is no barrier (ARAP) lets the flip-free bound squeeze a
+  // triangle that would rather flip closer to zero area every iteration, at
+  // a vanishing energy gain (cat_f1500: area ratio 5e-16, E_SD 6e27): its
+  // triangles keep at least this fraction of their area relative to the
+  // map's mean area ratio (or half their first area, if smaller).
+  double area_floor = 1e-3;
 };
+
+// Energies may declare `static constexpr bool is_scale_invariant()`.
+template <typename Energy, typename = void>
+struct Is_scale_invariant : std::false_type {};
+template <typename Energy>
+struct Is_scale_invariant<Energy, std::void_t<decltype(Energy::is_scale_invariant())> >
+  : std::integral_constant<bool, Energy::is_scale_invariant()> {};
+
+// Whether the energy grows without bound as a triangle degenerates (SD,
+// MIPS), measured on a sliver: ARAP stays near 1 there.
+template <typename Energy>
+bool is_barrier_energy(const Energy& energy)
+{
+  Eigen::Matrix2d J;
+  J << 1, 0, 0, 1e-8;
+  return energy.value(J) > 1e4;
+}
+
+// E_SD(s uv) = s^2 a + b / s^2 with a = sum A_t |J|^2, b = sum A_t |J|^2 / det^2
+// (over the total area): minimal at s^2 = sqrt(b / a), value 2 sqrt(ab).
+inline double symmetric_dirichlet_at_optimal_scale(const Cut_mesh& cm, const double* uv, double* scale = nullptr)
+{
+  double a = 0, b = 0;
+  Eigen::Matrix2d J;
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+  {
+    face_jacobian(cm, f, uv, J);
+    const double det = J.determinant(), n2 = J.squaredNorm();
+    if(!(det > 0)) { if(scale) *scale = 1; return std::numeric_limits<double>::infinity(); }
+    a += cm.face_area[f] * n2;
+    b += cm.face_area[f] * n2 / (det * det);
+  }
+  if(scale) *scale = std::sqrt(std::sqrt(b / a));
+  return 2 * std::sqrt(a * b) / cm.total_area;
+}
 
 enum Newton_status { NEWTON_PROGRESS, NEWTON_CONVERGED, NEWTON_SOLVER_FAILED };
 
@@ -71,6 +141,18 @@ double total_energy(const Cut_mesh& cm, const Energy& energy, const double* uv)
     e += cm.face_area[f] * energy.value(J);
   }
   return e / cm.total_area;
+}
+
+// The E_SD a distortion bound is judged on: that of the map as it is, or at
+// its optimal uniform scale for a scale-invariant energy (whose map's scale
+// means nothing: MIPS on cat_f1500, seams fixed, E_SD 9.2e8 as it is, 41.05 at the scale).
+template <typename Energy>
+double judged_distortion(const Cut_mesh& cm, const Energy&, const double* uv)
+{
+  if constexpr(Is_scale_invariant<Energy>::value)
+    return symmetric_dirichlet_at_optimal_scale(cm, uv);
+  else
+    return total_energy(cm, Symmetric_Dirichlet_energy(), uv);
 }
 
 // Scales all UVs (about their centroid) to the energy-minimizing factor:
@@ -110,7 +192,7 @@ public:
 
   Projected_newton(Cut_mesh& cm, const Energy& energy, const SolverTraits& solver,
                    const Newton_settings& settings = Newton_settings())
-    : m_cm(cm), m_energy(energy), m_solver(solver), m_settings(settings)
+    : m_cm(cm), m_energy(energy), m_solver(solver), m_settings(settings), m_barrier(is_barrier_energy(energy))
   {}
 
   // The scaffold (or null); call rebuild_pattern() after it changed.
@@ -193,9 +275,14 @@ public:
     double slope = m_gradient.dot(m_direction);
     if(!(slope < 0)) { m_direction = -m_gradient; slope = -m_gradient.squaredNorm(); }
 
-    double t_max = max_flip_free_step(m_cm, m_x.data(), m_direction.data());
+    double t_max = m_barrier ? max_flip_free_step(m_cm, m_x.data(), m_direction.data())
+                             : max_area_floor_step(m_direction.data());
     if(has_scaffold()) t_max = (std::min)(t_max, m_scaffold->max_flip_free_step(m_x.data(), m_direction.data()));
     double t = (std::min)(1., m_settings.flip_free_fraction * t_max);
+    // A triangle at its floor cuts every step short: judge the decrease as
+    // is, not per unit step, or the iterations creep on (ARAP on the cat in
+    // bound mode: 100000 of them).
+    const bool at_floor = !m_barrier && t < 1.;
     m_trial.resize(m_x.size());
     double e = std::numeric_limits<double>::infinity(), e_charts = e;
     for(int k = 0; k < 60; ++k, t *= 0.5)
@@ -217,7 +304,7 @@ public:
     m_last_decrease = e0 - e;
     m_energy_value = e_charts;
     m_objective = e;
-    if(m_last_decrease < m_settings.relative_decrease_tolerance * t * e0) return NEWTON_CONVERGED;
+    if(m_last_decrease < m_settings.relative_decrease_tolerance * (at_floor ? 1. : t) * e0) return NEWTON_CONVERGED;
     return NEWTON_PROGRESS;
   }
 
@@ -237,6 +324,30 @@ private:
       dof[2*a] = 2 * v[a];
       dof[2*a + 1] = dof[2*a] + 1;
     }
+  }
+
+  // The flip-free step of a non-barrier energy: no triangle below its area
+  // floor (set at the first call, see Newton_settings::area_floor).
+  double max_area_floor_step(const double* dir)
+  {
+    const std::size_t nf = m_cm.number_of_faces();
+    const double* uv = m_x.data();
+    if(m_floor2.size() != nf)
+    {
+      double uv_area2 = 0;
+      for(std::size_t f = 0; f < nf; ++f) uv_area2 += m_cm.signed_uv_area2(f);
+      const double ratio = m_settings.area_floor * uv_area2 / m_cm.total_area;
+      m_floor2.resize(nf);
+      for(std::size_t f = 0; f < nf; ++f)
+        m_floor2[f] = (std::min)(ratio * m_cm.face_area[f], 0.5 * m_cm.signed_uv_area2(f));
+    }
+    double t = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const int i0 = 2 * m_cm.corner_uv[3*f], i1 = 2 * m_cm.corner_uv[3*f+1], i2 = 2 * m_cm.corner_uv[3*f+2];
+      t = (std::min)(t, triangle_area_floor_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2, m_floor2[f]));
+    }
+    return t;
   }
 
   // m_x = charts' UVs followed by the scaffold's own vertices.
@@ -315,6 +426,8 @@ private:
   SolverTraits m_solver;
   Newton_settings m_settings;
   Scaffold* m_scaffold = nullptr;
+  bool m_barrier;
+  std::vector<double> m_floor2; // twice the smallest UV area of each face (non-barrier energies)
   std::vector<double> m_x;
   double m_objective = 0;
 
