@@ -380,6 +380,59 @@ BOOST_AUTO_TEST_CASE(cgal_sample_meshes_meet_the_bound)
   check_optimized({ "blobby_3cc.off", 3, 0, 4 });
 }
 
+// Two components, packed by optimize_seams() itself (texture_size given):
+// every UV in [margin, N - margin] texels, no overlap, and the map at its
+// optimal scale is the one the result describes (packing only moves,
+// rotates and scales the charts).
+BOOST_AUTO_TEST_CASE(optimize_seams_packs_when_given_a_texture_size)
+{
+  Mesh m = load("horizons.off");
+  auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const SMSO::Optimization_result r =
+    SMSO::optimize_seams(m, uv, SMSO_np::combine(SMSO_np::texture_size(256), SMSO_np::margin(4)));
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(r.charts == 2u);
+  double lo = 1, hi = 0;
+  for(halfedge_descriptor h : halfedges(m))
+  {
+    if(is_border(h, m)) continue;
+    lo = (std::min)({ lo, get(uv, h).x(), get(uv, h).y() });
+    hi = (std::max)({ hi, get(uv, h).x(), get(uv, h).y() });
+  }
+  BOOST_TEST(lo >= 4. / 256 - 1e-12);
+  BOOST_TEST(hi <= 1 - 4. / 256 + 1e-12);
+  BOOST_TEST(SMSO::measure_uv_map(m, uv).overlapping_triangle_pairs == 0u);
+  // E_SD at the optimal uniform scale: min over s of s^2 A + B / s^2 = 2 sqrt(A B)
+  double a = 0, b = 0, area = 0;
+  for(face_descriptor f : faces(m))
+  {
+    const halfedge_descriptor h0 = halfedge(f, m), h1 = next(h0, m), h2 = next(h1, m);
+    const Point_3 &p0 = m.point(target(h0, m)), &p1 = m.point(target(h1, m)), &p2 = m.point(target(h2, m));
+    const Point_2 u0 = get(uv, h0), u1 = get(uv, h1), u2 = get(uv, h2);
+    const K::Vector_3 e = p1 - p0, g = p2 - p0;
+    const double le = std::sqrt(e.squared_length()), gx = (e * g) / le;
+    const double gy = std::sqrt(g.squared_length() - gx * gx), A3 = 0.5 * le * gy;
+    const double ux = u1.x() - u0.x(), uy = u1.y() - u0.y(), vx = u2.x() - u0.x(), vy = u2.y() - u0.y();
+    const double j00 = ux / le, j10 = uy / le, j01 = (vx - j00 * gx) / gy, j11 = (vy - j10 * gx) / gy;
+    const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+    BOOST_TEST_REQUIRE(det > 0);
+    a += A3 * frob;
+    b += A3 * frob / (det * det);
+    area += A3;
+  }
+  const double optimal = 2 * std::sqrt(a / area * b / area);
+  BOOST_TEST(std::abs(optimal - r.distortion_at_optimal_scale) <= 1e-9 * optimal);
+  BOOST_TEST(r.distortion_at_optimal_scale <= 4.1);
+
+  // a margin that leaves no room is refused before anything runs, the map untouched
+  auto uv2 = m.add_property_map<halfedge_descriptor, Point_2>("h:uv2", Point_2(-7, 42)).first;
+  const SMSO::Optimization_result bad =
+    SMSO::optimize_seams(m, uv2, SMSO_np::combine(SMSO_np::texture_size(16), SMSO_np::margin(8)));
+  BOOST_TEST(bad.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(bad.iterations == 0u);
+  for(halfedge_descriptor h : halfedges(m)) if(!is_border(h, m)) BOOST_TEST_REQUIRE(get(uv2, h) == Point_2(-7, 42));
+}
+
 // Very coarse meshes (46 and 180 triangles, genus 3 and 1): under the
 // scaffold no split lowers E_SD above the bound; the worst triangles are
 // detached into charts of their own (E_SD 4 each) until the bound is met.

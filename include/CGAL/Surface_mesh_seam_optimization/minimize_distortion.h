@@ -152,10 +152,11 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///   for every halfedge `h` with a face, `get(uvmap, h)` is the UV of
 ///   `target(h)` in `face(h)`.
 ///
-/// \param tm the mesh; it must be a topological disk, a closed genus-0
-///   surface (then slit open: two edges at one vertex, or a shortest path
-///   between two far vertices when that map degenerates), or cut into such charts by the
-///   seams of `edge_is_seam_map`; with `use_uv_map_as_initial`, any charts.
+/// \param tm the mesh, of any genus, with any number of boundary loops and
+///   connected components: it is cut into charts as
+///   `compute_initial_parameterization()` says (closed genus-0 charts slit
+///   open, handles cut by loops, holes kept), after the seams of
+///   `edge_is_seam_map`; with `use_uv_map_as_initial`, the given charts.
 /// \param uvmap receives the result; read as the initial map with `use_uv_map_as_initial(true)`
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin

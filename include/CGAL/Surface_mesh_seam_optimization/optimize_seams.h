@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
+#include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 
 #include <cmath>
 #include <functional>
@@ -23,8 +24,8 @@ namespace Surface_mesh_seam_optimization {
 /// \tparam UVMap a read-write property map `halfedge_descriptor -> Point_2`
 ///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
 ///
-/// \param tm a topological disk or closed genus-0 surface, or several of them
-///   (or, with `edge_is_seam_map` / `use_uv_map_as_initial`, a mesh already cut into disks)
+/// \param tm a triangle mesh of any genus, with any number of boundary loops and connected
+///   components (see `compute_initial_parameterization()` for how it is cut into charts first)
 /// \param uvmap receives the UV map
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
@@ -97,6 +98,14 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{texture_size}
+///     \cgalParamDescription{when given, the result's charts are packed into [0,1]^2 for a texture of this
+///       many texels (see `pack_charts()`, whose `margin`, `allow_rotation` and `equal_texel_density` are
+///       read too); the figures of the result are those of the map before packing (same E_SD at the optimal
+///       scale, same seams). Invalid packing parameters are refused before the optimization starts}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{none (not packed)}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// The bound is on E_SD of the map as written, but for a scale-invariant
@@ -121,6 +130,14 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
                                  Eigen_simplicial_ldlt_traits());
   Default_seam_optimization_visitor default_visitor;
   auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+
+  constexpr bool pack = !parameters::is_default_parameter<NamedParameters, internal_np::texture_size_t>::value;
+  const internal::Packing_settings packing = internal::packing_settings(np);
+  if(pack)
+  {
+    result.status = internal::check_packing_settings(packing, result.message);
+    if(result.status != OK) return result;
+  }
 
   internal::Alternating_settings settings;
   internal::Cut_mesh cm;
@@ -149,10 +166,16 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     result.status = ERROR_DEGENERATE_UV_RESULT;
     return result;
   }
+  internal::measure_result(cm, energy, settings.distortion_bound, result);
+  if(pack)
+  {
+    Chart_packing_result packed;
+    const Error_code ec = internal::pack_cut_mesh(cm, packing, packed, result.message);
+    if(ec != OK) { result.status = ec; return result; }
+  }
   internal::write_uv_map(cm, copy, uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  internal::measure_result(cm, energy, settings.distortion_bound, result);
   result.lambda = optimizer.lambda();
   result.iterations = optimizer.iterations();
   result.topology_operations = optimizer.topology_operations();
