@@ -134,6 +134,26 @@ Surface_topology uv_topology(const Mesh& m, UVMap uv)
   return topology(tris, int(id.size()));
 }
 
+// Face f's 3D area, and |J|_F^2 = s1^2 + s2^2 and det J = s1 s2 of its map.
+template <class UVMap>
+void face_map(const Mesh& m, UVMap uv, face_descriptor f, double& area, double& frob, double& det)
+{
+  const halfedge_descriptor h0 = halfedge(f, m), h1 = next(h0, m), h2 = next(h1, m);
+  const Point_3 &p0 = m.point(target(h0, m)), &p1 = m.point(target(h1, m)), &p2 = m.point(target(h2, m));
+  const Point_2 u0 = get(uv, h0), u1 = get(uv, h1), u2 = get(uv, h2);
+  // 3D triangle in its own plane: e1 along x
+  const K::Vector_3 a = p1 - p0, b = p2 - p0;
+  const double la = std::sqrt(a.squared_length());
+  const double bx = (a * b) / la, by = std::sqrt((std::max)(0., b.squared_length() - bx * bx));
+  area = 0.5 * la * by;
+  const double ux = u1.x() - u0.x(), uy = u1.y() - u0.y(), vx = u2.x() - u0.x(), vy = u2.y() - u0.y();
+  // J = [u v] * inverse([la bx; 0 by])
+  const double j00 = ux / la, j10 = uy / la;
+  const double j01 = (vx - j00 * bx) / by, j11 = (vy - j10 * bx) / by;
+  frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11;
+  det = j00 * j11 - j01 * j10;
+}
+
 // E_SD recomputed from the written map, and the number of triangles whose UV
 // area is not positive.
 template <class UVMap>
@@ -143,21 +163,9 @@ double recomputed_distortion(const Mesh& m, UVMap uv, std::size_t& flipped)
   flipped = 0;
   for(face_descriptor f : faces(m))
   {
-    const halfedge_descriptor h0 = halfedge(f, m), h1 = next(h0, m), h2 = next(h1, m);
-    const Point_3 &p0 = m.point(target(h0, m)), &p1 = m.point(target(h1, m)), &p2 = m.point(target(h2, m));
-    const Point_2 u0 = get(uv, h0), u1 = get(uv, h1), u2 = get(uv, h2);
-    // 3D triangle in its own plane: e1 along x
-    const K::Vector_3 a = p1 - p0, b = p2 - p0;
-    const double la = std::sqrt(a.squared_length());
-    const double bx = (a * b) / la, by = std::sqrt((std::max)(0., b.squared_length() - bx * bx));
-    const double A3 = 0.5 * la * by;
-    const double ux = u1.x() - u0.x(), uy = u1.y() - u0.y(), vx = u2.x() - u0.x(), vy = u2.y() - u0.y();
-    const double det_uv = ux * vy - uy * vx;
-    if(!(det_uv > 0)) { ++flipped; continue; }
-    // J = [u v] * inverse([la bx; 0 by])
-    const double j00 = ux / la, j10 = uy / la;
-    const double j01 = (vx - j00 * bx) / by, j11 = (vy - j10 * bx) / by;
-    const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+    double A3, frob, det;
+    face_map(m, uv, f, A3, frob, det);
+    if(!(det > 0)) { ++flipped; continue; }
     e += A3 * frob * (1 + 1 / (det * det));
     area += A3;
   }
@@ -406,15 +414,8 @@ BOOST_AUTO_TEST_CASE(optimize_seams_packs_when_given_a_texture_size)
   double a = 0, b = 0, area = 0;
   for(face_descriptor f : faces(m))
   {
-    const halfedge_descriptor h0 = halfedge(f, m), h1 = next(h0, m), h2 = next(h1, m);
-    const Point_3 &p0 = m.point(target(h0, m)), &p1 = m.point(target(h1, m)), &p2 = m.point(target(h2, m));
-    const Point_2 u0 = get(uv, h0), u1 = get(uv, h1), u2 = get(uv, h2);
-    const K::Vector_3 e = p1 - p0, g = p2 - p0;
-    const double le = std::sqrt(e.squared_length()), gx = (e * g) / le;
-    const double gy = std::sqrt(g.squared_length() - gx * gx), A3 = 0.5 * le * gy;
-    const double ux = u1.x() - u0.x(), uy = u1.y() - u0.y(), vx = u2.x() - u0.x(), vy = u2.y() - u0.y();
-    const double j00 = ux / le, j10 = uy / le, j01 = (vx - j00 * gx) / gy, j11 = (vy - j10 * gx) / gy;
-    const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
+    double A3, frob, det;
+    face_map(m, uv, f, A3, frob, det);
     BOOST_TEST_REQUIRE(det > 0);
     a += A3 * frob;
     b += A3 * frob / (det * det);
