@@ -365,6 +365,7 @@ BOOST_AUTO_TEST_CASE(shared_meshes_meet_the_bound)
   check_optimized({ "torus_with_hole.obj", 1, 1, 1 });
   check_optimized({ "torus_with_holes.obj", 1, 1, 2 });
   check_optimized({ "multiComp.obj", 6, 3, 6 }, 0); // the slowest here: no recut round
+  check_optimized({ "double_triangles.obj", 2, 0, 2 });
   check_optimized({ "cube.obj", 1, 0, 0 });
   check_optimized({ "plane.obj", 1, 0, 1 });
   check_optimized({ "triangle_clockwise.obj", 1, 0, 1 });
