@@ -74,6 +74,14 @@ public:
   static constexpr double minimum_value();
 
   /*!
+  optional: `true` for an energy that does not change when the map is scaled
+  uniformly (`Conformal_energy`). The distortion bound of a result is then
+  judged on E_SD at the map's optimal uniform scale instead of as written.
+  An energy without this member is taken as not scale invariant.
+  */
+  static constexpr bool is_scale_invariant();
+
+  /*!
   returns a short lowercase identifier of the energy for logs and output
   (`"symmetric_dirichlet"`, `"arap"`, `"mips"` for the models of the package).
   */
