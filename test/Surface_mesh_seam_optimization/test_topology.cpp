@@ -229,6 +229,22 @@ void check_optimized(const Expectation& x, int recut_rounds = 6)
   }
 }
 
+// The initial map alone: OK, no flip, seams = UV discontinuities, every
+// chart planar, no overlap. Returns the UV mesh's topology.
+template <class UVMap, class SeamMap>
+Surface_topology check_initial_map(const Mesh& m, UVMap uv, SeamMap seam)
+{
+  BOOST_TEST_REQUIRE(SMSO::compute_initial_parameterization(m, seam, uv) == SMSO::OK);
+  std::size_t flipped = 0;
+  recomputed_distortion(m, uv, flipped);
+  BOOST_TEST(flipped == 0u);
+  BOOST_TEST(seam_mismatches(m, uv, seam) == 0u);
+  const Surface_topology out = uv_topology(m, uv);
+  for(int k = 0; k < out.components; ++k) BOOST_TEST(out.genus[k] == 0);
+  BOOST_TEST(SMSO::measure_uv_map(m, uv).overlapping_triangle_pairs == 0u);
+  return out;
+}
+
 } // namespace
 
 // The initial map alone: handles cut by loops through one point, holes kept
@@ -247,22 +263,15 @@ BOOST_AUTO_TEST_CASE(initial_map_cuts_handles_and_keeps_holes)
       const Surface_topology in = mesh_topology(m);
       auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
       auto seam = m.add_property_map<edge_descriptor, bool>("e:seam", false).first;
-      BOOST_TEST_REQUIRE(SMSO::compute_initial_parameterization(m, seam, uv) == SMSO::OK);
-      std::size_t flipped = 0;
-      recomputed_distortion(m, uv, flipped);
-      BOOST_TEST(flipped == 0u);
-      BOOST_TEST(seam_mismatches(m, uv, seam) == 0u);
-      const Surface_topology out = uv_topology(m, uv);
+      const Surface_topology out = check_initial_map(m, uv, seam);
       BOOST_TEST(out.components == c.charts);
       BOOST_TEST(std::accumulate(out.loops.begin(), out.loops.end(), 0) == c.uv_loops);
-      for(int k = 0; k < out.components; ++k) BOOST_TEST(out.genus[k] == 0);
       // genus-0 charts with boundary need no seam at all
       const int genus = std::accumulate(in.genus.begin(), in.genus.end(), 0);
       std::size_t seams = 0;
       for(edge_descriptor e : edges(m)) seams += get(seam, e) ? 1 : 0;
       if(genus == 0) BOOST_TEST(seams == 0u);
       else BOOST_TEST(seams > 0u);
-      BOOST_TEST(SMSO::measure_uv_map(m, uv).overlapping_triangle_pairs == 0u);
     }
 }
 
@@ -331,15 +340,8 @@ BOOST_AUTO_TEST_CASE(a_chart_that_cannot_be_mapped_whole_is_split)
   BOOST_TEST(in.loops[0] == 106);
   auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
   auto seam = m.add_property_map<edge_descriptor, bool>("e:seam", false).first;
-  BOOST_TEST_REQUIRE(SMSO::compute_initial_parameterization(m, seam, uv) == SMSO::OK);
-  std::size_t flipped = 0;
-  recomputed_distortion(m, uv, flipped);
-  BOOST_TEST(flipped == 0u);
-  BOOST_TEST(seam_mismatches(m, uv, seam) == 0u);
-  const Surface_topology out = uv_topology(m, uv);
+  const Surface_topology out = check_initial_map(m, uv, seam);
   BOOST_TEST(out.components > 1);
-  for(int k = 0; k < out.components; ++k) BOOST_TEST(out.genus[k] == 0);
-  BOOST_TEST(SMSO::measure_uv_map(m, uv).overlapping_triangle_pairs == 0u);
   std::map<std::pair<double, double>, vertex_descriptor> at;
   std::size_t coincident = 0;
   for(halfedge_descriptor h : halfedges(m))
@@ -355,6 +357,7 @@ BOOST_AUTO_TEST_CASE(a_chart_that_cannot_be_mapped_whole_is_split)
     SMSO::optimize_seams(m, uv2, SMSO_np::maximum_number_of_iterations(30));
   BOOST_TEST(r.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
   BOOST_TEST(r.overlapping_triangle_pairs == 0u);
+  std::size_t flipped = 0;
   recomputed_distortion(m, uv2, flipped);
   BOOST_TEST(flipped == 0u);
 }
