@@ -14,6 +14,7 @@ start=$(date +%s)
 # RelWithDebInfo with its flags replaced: CGAL's CMake accepts the build
 # type, and nothing appends -O2/-O3 after -O1.
 mkdir -p "$build"
+build=$(cd "$build" && pwd) # absolute: the filtered suites below run from their own folder
 cmake -S . -B "$build" -DBUILD_TESTING=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g $san" \
   -DCMAKE_EXE_LINKER_FLAGS="$san" >"$build/cmake.log" 2>&1 || { cat "$build/cmake.log"; exit 1; }
