@@ -10,12 +10,13 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_DETACH_FACES_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_DETACH_FACES_H
 
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -26,15 +27,9 @@ namespace internal {
 // Symmetric Dirichlet density s1^2 + s2^2 + s1^-2 + s2^-2 of face f.
 inline double symmetric_dirichlet_density(const Cut_mesh& cm, std::size_t f)
 {
-  const double* u0 = &cm.uv[2 * cm.corner_uv[3 * f]];
-  const double* u1 = &cm.uv[2 * cm.corner_uv[3 * f + 1]];
-  const double* u2 = &cm.uv[2 * cm.corner_uv[3 * f + 2]];
-  const double* B = &cm.rest_inverse[4 * f]; // column-major
-  const double d[4] = { u1[0] - u0[0], u1[1] - u0[1], u2[0] - u0[0], u2[1] - u0[1] }; // columns
-  const double j00 = d[0] * B[0] + d[2] * B[1], j10 = d[1] * B[0] + d[3] * B[1];
-  const double j01 = d[0] * B[2] + d[2] * B[3], j11 = d[1] * B[2] + d[3] * B[3];
-  const double frob = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11, det = j00 * j11 - j01 * j10;
-  return det > 0 ? frob * (1 + 1 / (det * det)) : std::numeric_limits<double>::infinity();
+  Eigen::Matrix2d J;
+  face_jacobian(cm, f, cm.uv.data(), J);
+  return Symmetric_Dirichlet_energy().value(J);
 }
 
 // True if taking face f out of its chart would leave some UV vertex of it
