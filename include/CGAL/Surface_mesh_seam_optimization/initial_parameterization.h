@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -45,29 +46,6 @@ namespace internal {
 // twice its area against its longest edge squared (the sine of its largest
 // angle, up to a factor <= 2). Below this, distortion energies overflow.
 inline double degenerate_triangle_threshold() { return 1e-12; }
-
-struct Union_find
-{
-  std::vector<int> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i)
-  {
-    while(parent[i] != i)
-    {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  }
-  // The smaller index becomes the root, so roots do not depend on the merge order.
-  void unite(int a, int b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a < b) parent[b] = a;
-    else if(b < a) parent[a] = b;
-  }
-};
 
 // CGAL's circular arc-length border, measured with the user's vertex point map
 // (the stock one reads the mesh's internal point map).

@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Chart_layout.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Detach_faces.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
@@ -264,6 +265,12 @@ private:
   {
     if(!m_lazy) return true;
     if(count_overlapping_pairs(m_cm, 1) == 0) { keep_as_safe(); return true; }
+    // where a chart lies is free: only a chart that overlaps itself needs the scaffold
+    if(lay_out_uv_components(m_cm) > 1 && count_overlapping_pairs(m_cm, 1) == 0)
+    {
+      keep_as_safe();
+      return true;
+    }
     if(m_restart_at_overlap)
     {
       // The input's own disks keep about their initial layout; charts that
