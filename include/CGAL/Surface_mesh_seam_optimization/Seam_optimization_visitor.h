@@ -4,7 +4,11 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_OPTIMIZATION_VISITOR_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_OPTIMIZATION_VISITOR_H
 
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+
 #include <cstddef>
+#include <functional>
+#include <type_traits>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
@@ -37,6 +41,33 @@ struct Default_seam_optimization_visitor
   /// after every dual update of lambda; returns `true`
   bool on_lambda_update(const Seam_optimization_progress&) { return true; }
 };
+
+namespace internal {
+
+// The `visitor` named parameter as an object to call: a visitor passed by
+// value is copied (into the returned holder), one passed as std::ref(v) is
+// held by reference, none gives the default visitor. Call unwrap_visitor() on
+// the holder, kept alive as long as the run.
+template <typename NamedParameters>
+auto visitor_parameter(const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::visitor),
+                                      Default_seam_optimization_visitor());
+}
+
+template <typename Visitor>
+Visitor& unwrap_visitor(Visitor& visitor) { return visitor; }
+
+template <typename Visitor>
+Visitor& unwrap_visitor(std::reference_wrapper<Visitor>& visitor)
+{
+  static_assert(!std::is_const<Visitor>::value,
+                "the visitor is called through a const reference: pass it by value or as std::ref(v) "
+                "to a non-const visitor (a visitor that cannot be copied must be passed as std::ref(v))");
+  return visitor.get();
+}
+
+} // namespace internal
 
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL

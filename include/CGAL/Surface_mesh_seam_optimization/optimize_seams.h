@@ -76,7 +76,9 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
-///     \cgalParamDescription{a model of `SeamOptimizationVisitor` (pass `std::ref(v)` to keep its state)}
+///     \cgalParamDescription{a model of `SeamOptimizationVisitor`. Passed by value (`visitor(v)`,
+///       `visitor(My_visitor())`), it is copied and the copy is called, as in `Polygon_mesh_processing`;
+///       pass `std::ref(v)` to have `v` itself called (to read its state afterwards)}
 ///     \cgalParamDefault{`Default_seam_optimization_visitor`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_iterations}
@@ -120,7 +122,6 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using parameters::get_parameter_reference;
 
   CGAL::Real_timer timer;
   timer.start();
@@ -128,8 +129,8 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                  Eigen_simplicial_ldlt_traits());
-  Default_seam_optimization_visitor default_visitor;
-  auto& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  auto visitor_holder = internal::visitor_parameter(np); // a copy of a visitor passed by value
+  auto& visitor = internal::unwrap_visitor(visitor_holder);
 
   constexpr bool pack = !parameters::is_default_parameter<NamedParameters, internal_np::texture_size_t>::value;
   const internal::Packing_settings packing = internal::packing_settings(np);
