@@ -7,15 +7,20 @@
 // vertex's canonical halfedge of the underlying mesh) and the package's
 // convention (one UV per face corner, stored at every halfedge with a face).
 //
-// As with CGAL/boost/graph/Seam_mesh.h itself, include the mesh's header
-// (e.g. CGAL/Surface_mesh.h) first: Seam_mesh calls CGAL::target(h, tm) & co.
-// by qualified name.
+// CGAL/boost/graph/Seam_mesh.h calls CGAL::target(h, tm) & co. by qualified
+// name, so the graph traits of the underlying mesh must be declared before it.
+// Those of Surface_mesh and Polyhedron_3 are included here, so the package's
+// headers may come first; for another FaceGraph (OpenMesh, a
+// Linear_cell_complex, a HalfedgeDS), include its graph traits header before
+// any header of this package.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_MESH_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SEAM_MESH_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h> // before Seam_mesh.h, see above
+#include <CGAL/boost/graph/graph_traits_Surface_mesh.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
