@@ -1,0 +1,189 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Named parameters as a CGAL user writes them: the package's header first,
+// chains of the package's and CGAL's parameters in any order, a visitor
+// passed by value or by std::ref, the last duplicate winning, and CGAL's
+// vertex_point_map on a Polyhedron_3.
+
+// The package's header before any CGAL mesh header: each header includes what it uses.
+#include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+#include <CGAL/Surface_mesh_seam_optimization/measure.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#define BOOST_TEST_MODULE named_parameters
+#include <boost/test/unit_test.hpp>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+
+namespace SMSO = CGAL::Surface_mesh_seam_optimization;
+namespace SMSO_np = CGAL::Surface_mesh_seam_optimization::parameters;
+
+namespace {
+
+const std::string cube = std::string(SMSO_TEST_DATA_DIR) + "/general/cube.obj"; // 12 triangles, closed
+
+// Counts its callbacks in a counter shared by all of its copies: a visitor
+// passed by value is copied before it is called.
+struct Counting_visitor
+{
+  std::shared_ptr<std::size_t> calls = std::make_shared<std::size_t>(0);
+  bool on_iteration(const SMSO::Seam_optimization_progress&) { ++*calls; return true; }
+  bool on_topology_operation(const SMSO::Seam_optimization_progress&) { ++*calls; return true; }
+  bool on_lambda_update(const SMSO::Seam_optimization_progress&) { ++*calls; return true; }
+};
+
+// Counts in itself: only std::ref(v) lets the caller see the count.
+struct Plain_counting_visitor
+{
+  std::size_t calls = 0;
+  bool on_iteration(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
+  bool on_topology_operation(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
+  bool on_lambda_update(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
+};
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Surface_mesh;
+typedef Surface_mesh::Halfedge_index SM_halfedge;
+
+template <typename NP>
+SMSO::Optimization_result run_on_cube(const NP& np, double& recomputed)
+{
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(cube, sm));
+  auto uv = sm.add_property_map<SM_halfedge, K::Point_2>("h:uv").first;
+  const SMSO::Optimization_result r = SMSO::optimize_seams(sm, uv, np);
+  recomputed = r.has_result() ? SMSO::distortion(sm, uv) : -1;
+  BOOST_TEST_MESSAGE(SMSO::get_error_code_name(r.status) << " " << r.message << ", E_SD " << r.distortion
+                     << " (recomputed " << recomputed << "), " << r.iterations << " iterations, "
+                     << r.charts << " charts");
+  return r;
+}
+
+template <typename NP, typename Tag>
+double read(const NP& np, Tag tag)
+{
+  return SMSO_np::choose_parameter(SMSO_np::get_parameter(np, tag), -1.);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_chain_with_a_visitor_passed_by_value)
+{
+  Counting_visitor visitor;
+  const auto np = SMSO_np::distortion_bound(4.1).bijective(true).number_of_recut_rounds(2).visitor(visitor);
+  typedef std::decay_t<decltype(np)> NP;
+  static_assert(!SMSO_np::is_default_parameter<NP, CGAL::internal_np::visitor_t>::value, "");
+  static_assert(SMSO_np::is_default_parameter<NP, CGAL::internal_np::vertex_point_t>::value, "");
+  BOOST_TEST(read(np, SMSO::internal_np::distortion_bound) == 4.1);
+  BOOST_TEST(read(np, SMSO::internal_np::number_of_recut_rounds) == 2.);
+
+  double recomputed = 0;
+  const SMSO::Optimization_result r = run_on_cube(np, recomputed);
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(r.bound_met);
+  BOOST_TEST(r.distortion <= 4.1 + 1e-9);
+  BOOST_TEST(recomputed <= 4.1 + 1e-9);
+  BOOST_TEST(recomputed == r.distortion, boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(r.bijective);
+  BOOST_TEST(*visitor.calls > 0u); // the copy counted in the shared counter
+  BOOST_TEST(*visitor.calls >= r.iterations);
+
+  // a temporary, and a chain starting with CGAL's parameter
+  Counting_visitor temporary_counter;
+  const SMSO::Optimization_result t =
+    run_on_cube(SMSO_np::visitor(Counting_visitor(temporary_counter)).distortion_bound(4.1), recomputed);
+  BOOST_TEST(t.status == SMSO::OK);
+  BOOST_TEST(*temporary_counter.calls > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(a_visitor_passed_by_std_ref_is_called_itself)
+{
+  Plain_counting_visitor by_ref, by_value;
+  double recomputed = 0;
+  const SMSO::Optimization_result r =
+    run_on_cube(SMSO_np::number_of_recut_rounds(0).visitor(std::ref(by_ref)), recomputed);
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(by_ref.calls >= r.iterations);
+  BOOST_TEST(by_ref.calls > 0u);
+  // by value: the copy is called, the caller's object is left alone
+  const SMSO::Optimization_result s = run_on_cube(SMSO_np::number_of_recut_rounds(0).visitor(by_value), recomputed);
+  BOOST_TEST(s.status == SMSO::OK);
+  BOOST_TEST(by_value.calls == 0u);
+  BOOST_TEST(s.iterations == r.iterations); // the visitor does not change the run
+}
+
+BOOST_AUTO_TEST_CASE(the_last_duplicate_wins)
+{
+  BOOST_TEST(read(SMSO_np::combine(SMSO_np::distortion_bound(5.0), SMSO_np::distortion_bound(4.2)),
+                  SMSO::internal_np::distortion_bound) == 4.2);
+  BOOST_TEST(read(SMSO_np::distortion_bound(5.0).distortion_bound(4.2), SMSO::internal_np::distortion_bound) == 4.2);
+  // across packs of CGAL's class and the package's, and packs of several links
+  const auto np = SMSO_np::combine(CGAL::parameters::number_of_iterations(1).geom_traits(7.),
+                                   SMSO_np::seam_weight(0.1).number_of_iterations(2),
+                                   SMSO_np::default_values(), SMSO_np::margin(3).seam_weight(0.2));
+  BOOST_TEST(read(np, CGAL::internal_np::number_of_iterations) == 2.);
+  BOOST_TEST(read(np, SMSO::internal_np::seam_weight) == 0.2);
+  BOOST_TEST(read(np, CGAL::internal_np::geom_traits) == 7.);
+  BOOST_TEST(read(np, SMSO::internal_np::margin) == 3.);
+  BOOST_TEST(read(np, SMSO::internal_np::bijective) == -1.);
+  // ... and in what the function reads: the last bound, 4.05, is the one met
+  double recomputed = 0;
+  const SMSO::Optimization_result r =
+    run_on_cube(SMSO_np::combine(SMSO_np::distortion_bound(4.4), SMSO_np::distortion_bound(4.05)), recomputed);
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(recomputed <= 4.05 + 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(cgal_vertex_point_map_chains_on_a_Polyhedron_3)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EPICK;
+  typedef CGAL::Polyhedron_3<EPICK> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor vertex_descriptor;
+  typedef boost::graph_traits<Polyhedron>::halfedge_descriptor halfedge_descriptor;
+  typedef boost::graph_traits<Polyhedron>::edge_descriptor edge_descriptor;
+
+  Polyhedron mesh;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(cube, mesh));
+  // The points only in the user's map: the mesh's own points all collapse to
+  // one, so a run that ignored vertex_point_map would find zero-area faces.
+  std::map<vertex_descriptor, EPICK::Point_3> points;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    points[v] = v->point();
+    v->point() = CGAL::ORIGIN;
+  }
+  boost::associative_property_map<std::map<vertex_descriptor, EPICK::Point_3> > vpm(points);
+  std::map<halfedge_descriptor, EPICK::Point_2> uv_storage;
+  boost::associative_property_map<std::map<halfedge_descriptor, EPICK::Point_2> > uv(uv_storage);
+  std::unordered_map<edge_descriptor, bool> seam_storage;
+  for(edge_descriptor e : edges(mesh)) seam_storage[e] = false;
+  boost::associative_property_map<std::unordered_map<edge_descriptor, bool> > seams(seam_storage);
+
+  const SMSO::Optimization_result ignored = SMSO::optimize_seams(mesh, uv, SMSO_np::distortion_bound(4.2));
+  BOOST_TEST(!ignored.has_result());
+
+  const SMSO::Optimization_result r = SMSO::optimize_seams(
+    mesh, uv, SMSO_np::vertex_point_map(vpm).distortion_bound(4.2).edge_is_seam_map(seams).geom_traits(EPICK()));
+  BOOST_TEST_MESSAGE("Polyhedron_3: " << SMSO::get_error_code_name(r.status) << " " << r.message << ", E_SD "
+                     << r.distortion << ", " << r.charts << " charts");
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  const double recomputed = SMSO::distortion(mesh, uv, SMSO_np::vertex_point_map(vpm));
+  BOOST_TEST(recomputed <= 4.2 + 1e-9);
+  BOOST_TEST(recomputed == r.distortion, boost::test_tools::tolerance(1e-6));
+  std::size_t seam_edges = 0;
+  for(edge_descriptor e : edges(mesh)) seam_edges += get(seams, e) ? 1 : 0;
+  BOOST_TEST(seam_edges > 0u); // a closed cube is cut
+}
