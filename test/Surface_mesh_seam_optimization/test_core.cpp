@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Sparse_solver_traits.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
@@ -465,6 +466,40 @@ BOOST_AUTO_TEST_CASE(a_slit_stays_a_candidate_only_when_clearly_cheaper_than_a_b
                                  op(SMSO::internal::INTERIOR_SPLIT, -1.0, 9.0) };
   SMSO::internal::drop_costly_slits(ops, 1.5);
   BOOST_TEST(ops.size() == 2u);
+}
+
+// The dual step on rho = (1 - lambda) / lambda, by hand: rho moves by
+// kappa (E_SD - bound), further by whole steps until an operation pays.
+BOOST_AUTO_TEST_CASE(the_dual_step_prices_distortion_until_an_operation_pays)
+{
+  struct Op { double d_sd, d_se; };
+  auto rho_of = [](double lambda) { return (1 - lambda) / lambda; };
+  // above the bound, a split pays after one step: rho 1 -> 1 + (5 - 4.1) = 1.9
+  double lambda = 0.5;
+  BOOST_TEST(SMSO::internal::dual_step(5.0, 4.1, 1.0, std::vector<Op>{ { -1.0, 1.0 } }, lambda));
+  BOOST_TEST(rho_of(lambda) == 1.9, boost::test_tools::tolerance(1e-12));
+  // a split that pays only from rho = 10 on: whole steps of 0.9 up to it
+  lambda = 0.5;
+  BOOST_TEST(SMSO::internal::dual_step(5.0, 4.1, 1.0, std::vector<Op>{ { -0.1, 1.0 } }, lambda));
+  BOOST_TEST(rho_of(lambda) >= 10.);
+  BOOST_TEST(rho_of(lambda) <= 10. + 0.9 + 1e-9);
+  BOOST_TEST(-0.1 * rho_of(lambda) + 1.0 <= 0.);
+  // below the bound, a merge (seams 0.1 shorter, E_SD 0.5 higher) pays below rho = 0.2
+  lambda = 0.5;
+  BOOST_TEST(SMSO::internal::dual_step(4.0, 4.1, 1.0, std::vector<Op>{ { 0.5, -0.1 } }, lambda));
+  BOOST_TEST(rho_of(lambda) < 0.2);
+  BOOST_TEST(rho_of(lambda) > 0.2 - 0.1 - 1e-12);
+  BOOST_TEST(0.5 * rho_of(lambda) - 0.1 < 0.);
+  // rho never goes below 0: a merge that costs nothing pays at rho 0
+  lambda = 0.9;
+  BOOST_TEST(SMSO::internal::dual_step(1.0, 4.1, 1.0, std::vector<Op>{ { 0.5, -0.1 } }, lambda));
+  BOOST_TEST(lambda == 1.0);
+  // nothing can pay: lambda unchanged, false
+  lambda = 0.5;
+  BOOST_TEST(!SMSO::internal::dual_step(5.0, 4.1, 1.0, std::vector<Op>{ { 0.3, 1.0 } }, lambda));
+  BOOST_TEST(!SMSO::internal::dual_step(4.0, 4.1, 1.0, std::vector<Op>{ { -0.3, 1.0 } }, lambda));
+  BOOST_TEST(!SMSO::internal::dual_step(5.0, 4.1, 1.0, std::vector<Op>{}, lambda));
+  BOOST_TEST(lambda == 0.5);
 }
 
 // A seam from the boundary vertex (0,4) of a unit grid to the interior tip

@@ -11,8 +11,10 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Candidate_ranking.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Chart_layout.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Detach_faces.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
@@ -409,20 +411,6 @@ private:
     return polish_seams();
   }
 
-  // Among the seam-shortening `ops`, the one that costs the least distortion
-  // per unit of seam length removed, but those (uv_a, uv_b) already `failed`.
-  static const Operation* cheapest_per_seam_length(const std::vector<Operation>& ops,
-                                                   const std::vector<std::pair<int, int> >& failed)
-  {
-    const Operation* best = nullptr;
-    for(const Operation& op : ops)
-    {
-      if(std::find(failed.begin(), failed.end(), std::make_pair(op.uv_a, op.uv_b)) != failed.end()) continue;
-      if(!best || op.d_sd / -op.d_se < best->d_sd / -best->d_se) best = &op;
-    }
-    return best;
-  }
-
   // A perturbation of the result (iterated local search): unzip the seams
   // where they buy least (merges by distortion per seam length) until they
   // are `fraction` shorter, and alternate from there (at the result's
@@ -696,49 +684,11 @@ private:
     return m_newton.rebuild_pattern();
   }
 
-  // Vertices ranked by how much their triangles pull them apart: the spread
-  // (variance) of the incident triangles' energy gradients at the vertex. A
-  // split there lets the two sides follow their own pull (the reference's
-  // filter; ranking by the mean energy density instead gave 10-20% longer
-  // seams on bishop_part_f1000 and dragon_i_f10000).
-  void rank_vertices(std::vector<std::pair<double, int> >& boundary, std::vector<std::pair<double, int> >& interior)
-  {
-    const std::size_t nuv = m_cm.number_of_uv_vertices();
-    std::vector<double> sum(2 * nuv, 0.), sum2(nuv, 0.), count(nuv, 0.);
-    std::vector<int> corner(nuv, -1);
-    Eigen::Matrix2d J, dJ;
-    double g[6];
-    for(std::size_t f = 0; f < m_cm.number_of_faces(); ++f)
-    {
-      face_jacobian(m_cm, f, m_cm.uv.data(), J);
-      m_energy.value_and_gradient(J, dJ);
-      element_gradient(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), m_cm.face_area[f], dJ, g);
-      for(int k = 0; k < 3; ++k)
-      {
-        const int u = m_cm.corner_uv[3*f + k];
-        sum[2*u] += g[2*k]; sum[2*u+1] += g[2*k+1];
-        sum2[u] += g[2*k] * g[2*k] + g[2*k+1] * g[2*k+1];
-        count[u] += 1;
-        corner[u] = int(3*f + k);
-      }
-    }
-    for(std::size_t u = 0; u < nuv; ++u)
-    {
-      if(corner[u] < 0) continue;
-      const double mean2 = (sum[2*u] * sum[2*u] + sum[2*u+1] * sum[2*u+1]) / (count[u] * count[u]);
-      const std::pair<double, int> item(-(sum2[u] / count[u] - mean2), corner[u]);
-      (is_boundary_uv_corner(m_cm, corner[u]) ? boundary : interior).push_back(item);
-    }
-    std::sort(boundary.begin(), boundary.end());
-    std::sort(interior.begin(), interior.end());
-  }
-
   void gather_candidates(double e_sd, std::vector<Operation>& ops)
   {
     std::vector<std::pair<double, int> > boundary, interior;
-    rank_vertices(boundary, interior);
-    const std::size_t nb = (std::min)(boundary.size(),
-                                      (std::max)(std::size_t(20), std::size_t(std::pow(double(boundary.size()), 0.8))));
+    rank_split_candidates(m_cm, m_energy, boundary, interior);
+    const std::size_t nb = number_of_boundary_candidates(boundary.size());
     // Independent stencil solves: in parallel where TBB is linked, gathered in
     // candidate order so that results do not depend on the schedule.
     std::vector<std::vector<Operation> > per_vertex(nb);
@@ -767,8 +717,7 @@ private:
     for(const Operation& op : ops) profitable = profitable || (usable(op) && op.weighted(m_lambda) < 0);
     if(boundary.empty() || (!profitable && (m_settings.fixed_lambda || above)))
     {
-      const std::size_t ni = (std::min)(interior.size(),
-                                        (std::max)(std::size_t(10), std::size_t(std::pow(double(interior.size()), 0.6))));
+      const std::size_t ni = number_of_interior_candidates(interior.size());
       for(std::size_t i = 0; i < ni; ++i) m_topology.interior_splits(interior[i].second, ops);
     }
     // Nothing usable among the best ranked vertices (their splits would
@@ -781,43 +730,10 @@ private:
     }
   }
 
-  // rho <- max(0, rho + kappa (E_SD - b)), repeated until a candidate pays
-  // (a split while above the bound, a merge while below); false: nothing can.
+  // The dual step (see dual_step()), then the visitor; false: nothing can pay, or cancelled.
   bool dual_update(double e_sd, const std::vector<Operation>& ops)
   {
-    const double b = m_settings.distortion_bound;
-    double rho = (1 - m_lambda) / m_lambda;
-    const double step = m_settings.kappa * (e_sd - b);
-    rho = (std::max)(0., rho + step);
-    // rho threshold of each operation: profitable iff (d_sd * rho + d_se) < 0
-    double need = std::numeric_limits<double>::infinity();
-    bool any_now = false;
-    for(const Operation& op : ops)
-    {
-      if(op.d_sd * rho + op.d_se < 0) { any_now = true; break; }
-      if(e_sd > b && op.d_se > 0 && op.d_sd < 0) need = (std::min)(need, op.d_se / -op.d_sd);
-    }
-    if(!any_now && e_sd > b)
-    {
-      if(!std::isfinite(need)) return false;
-      const double m = std::ceil((need - rho) / step);
-      rho += (std::max)(1., m) * step;
-      if(!(rho * 1 > need)) rho = need * (1 + 1e-9);
-    }
-    else if(!any_now && e_sd < b)
-    {
-      double best = -1; // largest rho at which some merge pays
-      for(const Operation& op : ops)
-        if(op.d_se < 0) best = (std::max)(best, op.d_sd <= 0 ? std::numeric_limits<double>::infinity() : -op.d_se / op.d_sd);
-      if(best < 0) return false;
-      if(rho >= best)
-      {
-        const double m = std::ceil((rho - best) / -step);
-        rho = (std::max)(0., rho + (std::max)(1., m) * step);
-        if(rho >= best) rho = best * (1 - 1e-9);
-      }
-    }
-    m_lambda = 1. / (1. + rho);
+    if(!dual_step(e_sd, m_settings.distortion_bound, m_settings.kappa, ops, m_lambda)) return false;
     if(!m_visitor.on_lambda_update(progress())) { m_cancelled = true; return false; }
     return true;
   }
