@@ -240,6 +240,19 @@ if ours_med is not None:
     if ref_med is not None:
         line += f"; on the {len(both)} meshes with a reference: ours {ours_med_both:.2f} s, reference {ref_med:.2f} s (ratio {ref_med / ours_med_both:.2f}x)"
     L.append(line)
+# seams against the reference: the figures issue 19 judges by
+rated = [o for o in out if o["seam_ratio"] is not None]
+if rated:
+    import math
+    gm = math.exp(sum(math.log(o["seam_ratio"]) for o in rated) / len(rated))
+    worst = max(rated, key=lambda o: o["seam_ratio"])
+    above = lambda t: sum(1 for o in rated if o["seam_ratio"] > t)
+    L.append(f"- seams (E_se / ref E_se) on {len(rated)} meshes: geometric mean {gm:.3f}, worst {worst['seam_ratio']:.3f} ({worst['mesh']}), "
+             f"{above(1.05)} above 1.05, {above(1.1)} above 1.1")
+    unmet = [o["mesh"] for o in out if o["uvm_e_sd"] in (None, "") or num(o["uvm_e_sd"]) is None or num(o["uvm_e_sd"]) > float(bound) + 1e-9]
+    bad = [o["mesh"] for o in out if str(o["uvm_flips"]) not in ("0", "None") or str(o["uvm_overlap_pairs"]) not in ("0", "None")]
+    L.append(f"- bound met on {len(out) - len(unmet)} of {len(out)} meshes" + (f" (not: {', '.join(unmet)})" if unmet else "")
+             + f"; flips or overlaps on {len(bad)}" + (f" ({', '.join(bad)})" if bad else ""))
 L.append("")
 hdr = ["mesh", "faces", "s", "ref s", "ref s / s", "Newton it", "ref it", "topo ops", "E_SD", "E_SD lib", "ref E_SD",
        "E_se", "E_se lib", "ref E_se", "ref bij", "E_se / ref", "charts", "flips", "overlaps", "MB", "ref MB", "status"]
