@@ -15,7 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 
-#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
 
 #include <algorithm>
 #include <limits>
@@ -157,22 +157,13 @@ bool orient_polygon_soup_duplicating(std::vector<Point>& points, std::vector<Pol
   return PMP::is_polygon_soup_a_polygon_mesh(polygons);
 }
 
-// The one definition of a zero-area triangle, the library's
-// (compute_initial_parameterization()): twice its area below
-// degenerate_triangle_threshold() times its longest edge squared, so that it
-// does not depend on the scale or position of the mesh.
+// The library's definition of a zero-area triangle (is_degenerate_triangle()):
+// scale- and position-free, so that --repair removes what the library refuses.
 template <typename Point>
 bool is_zero_area_triangle(const Point& a, const Point& b, const Point& c)
 {
-  const double u[3] = {b.x() - a.x(), b.y() - a.y(), b.z() - a.z()};
-  const double w[3] = {c.x() - a.x(), c.y() - a.y(), c.z() - a.z()};
-  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-  const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-  auto sq = [](const Point& p, const Point& q) {
-    return (p.x() - q.x()) * (p.x() - q.x()) + (p.y() - q.y()) * (p.y() - q.y()) + (p.z() - q.z()) * (p.z() - q.z());
-  };
-  const double lmax2 = (std::max)({sq(a, b), sq(b, c), sq(c, a)});
-  return !(twice_area > CGAL::Surface_mesh_seam_optimization::internal::degenerate_triangle_threshold() * lmax2);
+  const double p[3][3] = { { a.x(), a.y(), a.z() }, { b.x(), b.y(), b.z() }, { c.x(), c.y(), c.z() } };
+  return CGAL::Surface_mesh_seam_optimization::internal::is_degenerate_triangle(p[0], p[1], p[2]);
 }
 
 template <typename TriangleMesh>

@@ -12,6 +12,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
@@ -33,7 +35,6 @@
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,11 +42,6 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
-
-// Relative threshold below which a 3D triangle counts as degenerate:
-// twice its area against its longest edge squared (the sine of its largest
-// angle, up to a factor <= 2). Below this, distortion energies overflow.
-inline double degenerate_triangle_threshold() { return 1e-12; }
 
 // CGAL's circular arc-length border, measured with the user's vertex point map
 // (the stock one reads the mesh's internal point map).
@@ -222,21 +218,15 @@ Error_code initial_parameterization(const TriangleMesh& tm,
   std::vector<double> area3(nf);
   for(int f = 0; f < nf; ++f)
   {
-    const XYZ& a = P[cv[3 * f]];
-    const XYZ& b = P[cv[3 * f + 1]];
-    const XYZ& c = P[cv[3 * f + 2]];
-    const XYZ u = {{ b[0] - a[0], b[1] - a[1], b[2] - a[2] }};
-    const XYZ w = {{ c[0] - a[0], c[1] - a[1], c[2] - a[2] }};
-    const XYZ n = {{ u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0] }};
-    const double twice_area = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    auto sq = [](const XYZ& p, const XYZ& q)
-    { return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]); };
-    const double lmax2 = (std::max)({ sq(a, b), sq(b, c), sq(c, a) });
-    if(!(twice_area > internal::degenerate_triangle_threshold() * lmax2))
+    const double* a = P[cv[3 * f]].data();
+    const double* b = P[cv[3 * f + 1]].data();
+    const double* c = P[cv[3 * f + 2]].data();
+    if(internal::is_degenerate_triangle(a, b, c))
     {
       message = "face " + std::to_string(f) + " (numbered from 0) has a (numerically) zero area";
       return ERROR_DEGENERATE_TRIANGLE;
     }
+    const double twice_area = internal::twice_triangle_area(a, b, c);
     area3[f] = 0.5 * twice_area;
   }
 
@@ -489,31 +479,11 @@ Error_code initial_parameterization(const TriangleMesh& tm,
       }
       dist.assign(nv, std::numeric_limits<double>::infinity());
       pred.assign(nv, -1);
-      typedef std::pair<double, int> Item; // ties are broken by the vertex index: deterministic
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-      for(int s : sources)
-      {
-        dist[s] = 0;
-        queue.push(Item(0., s));
-      }
-      while(!queue.empty())
-      {
-        const Item top = queue.top();
-        queue.pop();
-        const int u = top.second;
-        if(top.first > dist[u]) continue;
-        for(int i = out_start[u]; i < out_start[u + 1]; ++i)
-        {
-          const int c = out_side[i];
-          const double d = top.first + side_length(c);
-          if(d < dist[cv[c]])
-          {
-            dist[cv[c]] = d;
-            pred[cv[c]] = c;
-            queue.push(Item(d, cv[c]));
-          }
-        }
-      }
+      internal::dijkstra(sources, dist,
+        [&](int u, const auto& visit) {
+          for(int i = out_start[u]; i < out_start[u + 1]; ++i) visit(cv[out_side[i]], side_length(out_side[i]), out_side[i]);
+        },
+        [&](int, int w, int c) { pred[w] = c; });
     };
     auto chart_vertices = [&](int k) -> std::vector<int>
     {
@@ -803,27 +773,10 @@ Error_code initial_parameterization(const TriangleMesh& tm,
       }
     auto grow = [&](const std::vector<int>& seeds)
     {
-      typedef std::pair<double, int> Item;
-      std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-      for(std::size_t i = 0; i < seeds.size(); ++i)
-      {
-        d[seeds[i]] = 0;
-        label[seeds[i]] = static_cast<int>(i);
-        queue.push(Item(0., seeds[i]));
-      }
-      while(!queue.empty())
-      {
-        const Item top = queue.top();
-        queue.pop();
-        if(top.first > d[top.second]) continue;
-        for(const auto& e : adj[top.second])
-          if(top.first + e.second < d[e.first])
-          {
-            d[e.first] = top.first + e.second;
-            label[e.first] = label[top.second];
-            queue.push(Item(d[e.first], e.first));
-          }
-      }
+      for(std::size_t i = 0; i < seeds.size(); ++i) label[seeds[i]] = static_cast<int>(i);
+      internal::dijkstra(seeds, d,
+        [&](int u, const auto& visit) { for(const auto& e : adj[u]) visit(e.first, e.second, -1); },
+        [&](int u, int w, int) { label[w] = label[u]; });
     };
     std::vector<int> seeds(1, cv[3 * fs.front()]);
     while(int(seeds.size()) < n_seeds)

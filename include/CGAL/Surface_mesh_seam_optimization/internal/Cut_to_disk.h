@@ -16,6 +16,8 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_TO_DISK_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_TO_DISK_H
 
+#include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
@@ -30,7 +32,6 @@
 #include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -195,24 +196,15 @@ private:
   {
     dist.assign(m_nodes, std::numeric_limits<double>::infinity());
     pred.assign(m_nodes, -1);
-    typedef std::pair<double, int> Item; // ties broken by node index: deterministic
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
-    dist[root] = 0;
-    queue.push(Item(0., root));
-    while(!queue.empty())
-    {
-      const Item top = queue.top();
-      queue.pop();
-      const int u = top.second;
-      if(top.first > dist[u]) continue;
-      for(int i = m_adj_start[u]; i < m_adj_start[u + 1]; ++i)
-      {
-        const Edge& e = m_edges[m_adj[i]];
-        const int w = e.u == u ? e.v : e.u;
-        const double d = top.first + e.length;
-        if(d < dist[w]) { dist[w] = d; pred[w] = m_adj[i]; queue.push(Item(d, w)); }
-      }
-    }
+    internal::dijkstra(std::vector<int>(1, root), dist,
+      [this](int u, const auto& visit) {
+        for(int i = m_adj_start[u]; i < m_adj_start[u + 1]; ++i)
+        {
+          const Edge& e = m_edges[m_adj[i]];
+          visit(e.u == u ? e.v : e.u, e.length, m_adj[i]);
+        }
+      },
+      [&pred](int, int w, int edge) { pred[w] = edge; });
   }
 
   bool cut_from(int root, std::vector<int>& real_sides, std::vector<int>& border_sides, double& length) const

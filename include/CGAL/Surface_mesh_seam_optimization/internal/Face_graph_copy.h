@@ -7,8 +7,8 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_FACE_GRAPH_COPY_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
-#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -114,18 +114,13 @@ Error_code copy_face_graph(const TriangleMesh& tm, VertexPointMap vpm, Cut_mesh&
   }
 
   cm.compute_rest_shape();
-  // Relative to each face's longest edge (compute_initial_parameterization()'s
-  // definition), not to the bounding box: a far vertex must not condemn small faces.
+  // Relative to each face's longest edge, not to the bounding box: a far
+  // vertex must not condemn small faces.
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
   {
     const double* p[3];
     for(int k = 0; k < 3; ++k) p[k] = &cm.points[3 * cm.corner_vertex[3*f + k]];
-    double u[3], w[3], lmax2 = 0;
-    for(int k = 0; k < 3; ++k) { u[k] = p[1][k] - p[0][k]; w[k] = p[2][k] - p[0][k]; }
-    for(int k = 0; k < 3; ++k)
-      lmax2 = (std::max)(lmax2, (p[k][0]-p[(k+1)%3][0])*(p[k][0]-p[(k+1)%3][0]) + (p[k][1]-p[(k+1)%3][1])*(p[k][1]-p[(k+1)%3][1]) + (p[k][2]-p[(k+1)%3][2])*(p[k][2]-p[(k+1)%3][2]));
-    const double n[3] = { u[1]*w[2] - u[2]*w[1], u[2]*w[0] - u[0]*w[2], u[0]*w[1] - u[1]*w[0] };
-    if(!(std::sqrt(n[0]*n[0] + n[1]*n[1] + n[2]*n[2]) > degenerate_triangle_threshold() * lmax2) ||
+    if(is_degenerate_triangle(p[0], p[1], p[2]) ||
        !std::isfinite(cm.rest_inverse[4*f+2]))
     {
       message = "face " + std::to_string(f + 1) + " (numbered from 1) has zero area";
