@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/seams_from_uv_map.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -649,21 +650,6 @@ bool write_json_report(const std::string& path, const Run_report& r)
 // ---------------------------------------------------------------------------
 // Input: load_mesh.h
 
-// Seams of a per-corner UV map: the edges whose two sides disagree on a UV.
-template <typename UVMap, typename SeamMap>
-void seams_from_uv_map(const Mesh& mesh, UVMap uvmap, SeamMap seams)
-{
-  for(edge_descriptor e : edges(mesh))
-  {
-    const halfedge_descriptor h = halfedge(e, mesh), o = opposite(h, mesh);
-    if(is_border(h, mesh) || is_border(o, mesh))
-      continue;
-    // get(uvmap, h) is the UV of target(h) in face(h); prev(o) also ends at target(h).
-    put(seams, e, get(uvmap, h) != get(uvmap, prev(o, mesh)) ||
-                  get(uvmap, prev(h, mesh)) != get(uvmap, o));
-  }
-}
-
 // ---------------------------------------------------------------------------
 // Outputs, checked before the run: a bad path is a usage error found in
 // milliseconds, not after minutes of optimization.
@@ -909,8 +895,9 @@ int run(const Options& options)
   if(!options.use_input_uv)
     uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
   Seam_map seams = mesh.add_property_map<edge_descriptor, bool>("e:smso_seam", false).first;
+  // (the library's tolerance: a UV written with a few digits is not a seam)
   if(options.use_input_uv)
-    seams_from_uv_map(mesh, uvmap, seams);
+    SMSO::seams_from_uv_map(mesh, uvmap, seams);
 
   const char* const progress_label[] = {"E_SD", "E_arap", "E_mips"};
   Progress_printer progress(!options.quiet, progress_label[static_cast<int>(options.energy)]);

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+#include <CGAL/Surface_mesh_seam_optimization/seams_from_uv_map.h>
 
 #include <algorithm>
 #include <cmath>
@@ -272,6 +273,60 @@ BOOST_AUTO_TEST_CASE(initial_map_cuts_handles_and_keeps_holes)
       for(edge_descriptor e : edges(m)) seams += get(seam, e) ? 1 : 0;
       if(genus == 0) BOOST_TEST(seams == 0u);
       else BOOST_TEST(seams > 0u);
+    }
+}
+
+// seams_from_uv_map(): the seams of the initial map are its UV discontinuities;
+// noise far below the tolerance adds none, one corner moved adds its two edges.
+BOOST_AUTO_TEST_CASE(seams_from_uv_map_finds_the_uv_discontinuities)
+{
+  for(const std::string name : { "torus_with_holes.obj", "pinion.off", "double-torus-3-holes.off" })
+    BOOST_TEST_CONTEXT(name)
+    {
+      Mesh m = load(name);
+      auto uv = m.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+      auto seam = m.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+      check_initial_map(m, uv, seam);
+      auto found = m.add_property_map<edge_descriptor, bool>("e:found", true).first;
+      BOOST_TEST(SMSO::seams_from_uv_map(m, uv, found) == SMSO::OK);
+      std::size_t differ = 0, seams = 0;
+      for(edge_descriptor e : edges(m)) { differ += get(seam, e) != get(found, e); seams += get(seam, e); }
+      BOOST_TEST(differ == 0u);
+      BOOST_TEST(seams > 0u);
+
+      CGAL::Bbox_2 box;
+      for(halfedge_descriptor h : halfedges(m)) if(!is_border(h, m)) box += get(uv, h).bbox();
+      const double diag = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+      unsigned seed = 1;
+      for(halfedge_descriptor h : halfedges(m))
+        if(!is_border(h, m))
+        {
+          seed = seed * 1103515245u + 12345u;
+          const double d = 1e-11 * diag * (double(seed % 2001) / 1000. - 1.);
+          put(uv, h, Point_2(get(uv, h).x() + d, get(uv, h).y() - d));
+        }
+      BOOST_TEST(SMSO::seams_from_uv_map(m, uv, found) == SMSO::OK);
+      differ = 0;
+      for(edge_descriptor e : edges(m)) differ += get(seam, e) != get(found, e);
+      BOOST_TEST(differ == 0u);
+
+      // a corner at a vertex on no seam and no border, moved: its two edges open
+      for(halfedge_descriptor h : halfedges(m))
+      {
+        if(is_border(h, m) || is_border_edge(h, m)) continue;
+        bool free = true;
+        for(halfedge_descriptor g : halfedges_around_target(h, m))
+          free = free && !is_border_edge(g, m) && !get(seam, edge(g, m));
+        if(!free) continue;
+        put(uv, h, Point_2(get(uv, h).x() + 1e-3 * diag, get(uv, h).y()));
+        BOOST_TEST(SMSO::seams_from_uv_map(m, uv, found) == SMSO::OK);
+        std::set<edge_descriptor> opened;
+        for(edge_descriptor e : edges(m)) if(get(found, e) && !get(seam, e)) opened.insert(e);
+        BOOST_TEST(opened.size() == 2u);
+        BOOST_TEST(opened.count(edge(h, m)) == 1u);
+        BOOST_TEST(opened.count(edge(next(h, m), m)) == 1u);
+        break;
+      }
     }
 }
 
