@@ -37,7 +37,7 @@ int main(int argc, char** argv)
   auto seams = mesh.add_property_map<Mesh::Edge_index, bool>("e:seam", false).first;
 
   const SMSO::Optimization_result r =
-    SMSO::optimize_seams(mesh, uvmap, NP::combine(NP::seam_weight(lambda), NP::edge_is_seam_map(seams)));
+    SMSO::optimize_seams(mesh, uvmap, NP::seam_weight(lambda).edge_is_seam_map(seams));
   if(!r.has_result())
   {
     std::cerr << SMSO::get_error_message(r.status) << ": " << r.message << std::endl;

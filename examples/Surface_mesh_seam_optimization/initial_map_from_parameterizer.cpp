@@ -66,8 +66,7 @@ int main(int argc, char** argv)
   // rescaled to the 3D size, and its distortion minimized with the same seams.
   SMSO::Optimization_result r = SMSO::minimize_distortion(
     mesh, uvmap,
-    SMSO::parameters::combine(SMSO::parameters::use_uv_map_as_initial(true),
-                              SMSO::parameters::edge_is_seam_map(seams)));
+    SMSO::parameters::use_uv_map_as_initial(true).edge_is_seam_map(seams));
   if(!r.has_result())
   {
     std::cerr << SMSO::get_error_message(r.status) << ": " << r.message << std::endl;

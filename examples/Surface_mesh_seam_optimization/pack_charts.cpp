@@ -47,7 +47,7 @@ int main(int argc, char** argv)
 
   const double texture_size = 1024, margin = 4;
   const SMSO::Chart_packing_result p =
-    SMSO::pack_charts(mesh, uvmap, NP::combine(NP::texture_size(texture_size), NP::margin(margin)));
+    SMSO::pack_charts(mesh, uvmap, NP::texture_size(texture_size).margin(margin));
   if(!p.has_result())
   {
     std::cerr << SMSO::get_error_message(p.status) << ": " << p.message << std::endl;

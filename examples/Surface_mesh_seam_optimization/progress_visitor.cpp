@@ -71,7 +71,7 @@ int main(int argc, char** argv)
   // std::ref: the function must call this object, not a copy of it
   Progress_visitor visitor(max_iterations, time_budget);
   const SMSO::Optimization_result r =
-    SMSO::optimize_seams(mesh, uvmap, NP::combine(NP::edge_is_seam_map(seams), NP::visitor(std::ref(visitor))));
+    SMSO::optimize_seams(mesh, uvmap, NP::edge_is_seam_map(seams).visitor(std::ref(visitor)));
   std::cout << "status " << SMSO::get_error_code_name(r.status) << " (" << SMSO::get_error_message(r.status)
             << ") after " << visitor.last_iteration << " Newton iterations" << std::endl;
   if(!r.has_result()) // only error codes leave the maps untouched

@@ -31,8 +31,9 @@ one), otherwise the current one. A run stopped from `on_iteration()` or
 
 The calls are made from the thread that called `optimize_seams()`, one at a
 time; they should be cheap, since `on_iteration()` is called once per
-Newton iteration. The visitor is taken by reference from the
-named parameter pack: pass `std::ref(visitor)` so that the function calls
+Newton iteration. A visitor passed by value (`visitor(v)`,
+`visitor(My_visitor())`) is copied and the copy is called, as in
+`Polygon_mesh_processing`; pass `std::ref(v)` so that the function calls
 the user's object itself, and the state it accumulates is visible after the
 call.
 

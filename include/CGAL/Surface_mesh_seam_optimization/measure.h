@@ -41,8 +41,35 @@ struct Uv_map_measures
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// Measures a per-corner UV map: seams are the edges whose two sides have
-/// different UVs (or those of `edge_is_seam_map` if given).
-/// Named parameters: `vertex_point_map`, `edge_is_seam_map`, `energy`.
+/// different UVs (or those of `edge_is_seam_map` if given). The functions
+/// below (`distortion()`, `seam_length()`, ...) take the same named parameters.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam UVMap a readable property map `halfedge_descriptor -> Point_2`
+///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
+///
+/// \param tm the mesh
+/// \param uvmap the UV map to measure
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 Uv_map_measures measure_uv_map(const TriangleMesh& tm, UVMap uvmap,

@@ -27,62 +27,80 @@ namespace Surface_mesh_seam_optimization {
 /// \param tm a triangle mesh of any genus, with any number of boundary loops and connected
 ///   components (see `compute_initial_parameterization()` for how it is cut into charts first)
 /// \param uvmap receives the UV map
-/// \param np optional named parameters:
+/// \param np an optional sequence of \ref PkgSurfaceMeshSeamOptimizationNamedParameters "named parameters"
+///   among the ones listed below, chained in any order
+///   (`parameters::distortion_bound(4.1).bijective(false).vertex_point_map(vpm)`; a parameter given twice
+///   takes its last value):
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{distortion_bound}
 ///     \cgalParamDescription{bound on E_SD (see below for the scale); the result meets it with the shortest seams found}
+///     \cgalParamType{`double` (any arithmetic type)}
 ///     \cgalParamDefault{`4.1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{seam_weight}
 ///     \cgalParamDescription{a fixed lambda in [0, 1): no bound, no dual step}
+///     \cgalParamType{`double` (any arithmetic type)}
 ///     \cgalParamDefault{none (bound mode)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{bijective}
 ///     \cgalParamDescription{keep the charts from overlapping one another or themselves: the space between
 ///       them is meshed (a scaffold) and no triangle of charts or scaffold may flip.
 ///       With `use_uv_map_as_initial`, the given map must then be bijective (else `ERROR_OVERLAPPING_UV_MAP`)}
+///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_seam_map}
 ///     \cgalParamDescription{read-write `edge_descriptor -> bool`: initial seams, and the result}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_seam_weight_map}
 ///     \cgalParamDescription{`edge_descriptor -> double` multiplying each edge's seam cost
 ///       (> 1 repels seams, < 1 attracts them)}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and a value type convertible to `double`}
 ///     \cgalParamDefault{all 1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_uv_map_as_initial}
 ///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply; flipped or degenerate
 ///       triangles are untangled first, as in `minimize_distortion()`, and `Optimization_result::message`
 ///       says so}
+///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
 ///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
 ///       types of the initial map); the optimization itself works in `double`}
+///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{energy}
 ///     \cgalParamDescription{a model of `DistortionEnergy` for the descent steps (the bound is always on E_SD)}
+///     \cgalParamType{a model of `DistortionEnergy`}
 ///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{a model of `SparseSolverTraits`}
+///     \cgalParamType{a model of `SparseSolverTraits`}
 ///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{a model of `SeamOptimizationVisitor`. Passed by value (`visitor(v)`,
 ///       `visitor(My_visitor())`), it is copied and the copy is called, as in `Polygon_mesh_processing`;
 ///       pass `std::ref(v)` to have `v` itself called (to read its state afterwards)}
+///     \cgalParamType{a model of `SeamOptimizationVisitor`, or `std::reference_wrapper` of one}
 ///     \cgalParamDefault{`Default_seam_optimization_visitor`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_iterations}
 ///     \cgalParamDescription{cap on Newton iterations}
+///     \cgalParamType{`std::size_t` (any integral type)}
 ///     \cgalParamDefault{`100000`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_recut_rounds}
@@ -92,6 +110,7 @@ namespace Surface_mesh_seam_optimization {
 ///       kept, and the rounds end at the first unzipping round that finds none shorter (more time for shorter
 ///       seams; 0 turns all of them off).
 ///       Reaching `maximum_number_of_iterations` during these rounds ends them with status `OK`}
+///     \cgalParamType{`int` (any integral type)}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{time_limit}
