@@ -867,7 +867,20 @@ Error_code initial_parameterization(const TriangleMesh& tm,
 ///        ignored. Written only to add the slits of closed charts and the cuts through handles.
 /// \param uvmap receives, for every halfedge `h` with a face, the UV of
 ///        `target(h)` in `face(h)`
-/// \param np optional: `vertex_point_map`, `geom_traits`
+/// \param np an optional sequence of named parameters among those below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D positions of the vertices}
+///     \cgalParamType{a readable property map, `vertex_descriptor` to a 3D point}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel whose `Point_2` the UVs are}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the points of `vertex_point_map`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 ///
 /// \return `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 /// `ERROR_NON_FINITE_COORDINATES`, `ERROR_DEGENERATE_TRIANGLE` (twice the

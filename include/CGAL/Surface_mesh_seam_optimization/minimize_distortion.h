@@ -162,16 +162,19 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a readable property map, `vertex_descriptor` to a 3D point}
 ///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
+///     \cgalParamDescription{the kernel, passed on to `compute_initial_parameterization()` (the
 ///       types of the initial map); the optimization itself works in `double`}
+///     \cgalParamType{a model of `Kernel`}
 ///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_seam_map}
-///     \cgalParamDescription{a read-write property map `edge_descriptor -> bool`: the fixed seams
+///     \cgalParamDescription{the fixed seams
 ///       (read unless the seams come from the input UV map), written with the final seams}
+///     \cgalParamType{a read-write property map, `edge_descriptor` to `bool`}
 ///     \cgalParamDefault{no seam map: seams implied by the UV map, or none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{use_uv_map_as_initial}
@@ -181,22 +184,27 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///       border fixed; if no region works, the default initial map with the same seams is used.
 ///       `Optimization_result::message` says which ("k flipped or degenerate triangles of the initial
 ///       UV map untangled", or "... fell back to the default initial map")}
+///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`: circle boundary + Tutte per chart}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{energy}
-///     \cgalParamDescription{a model of `DistortionEnergy`}
+///     \cgalParamDescription{the distortion energy minimized}
+///     \cgalParamType{a model of `DistortionEnergy`}
 ///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sparse_linear_solver}
-///     \cgalParamDescription{a model of `SparseSolverTraits`}
+///     \cgalParamDescription{the sparse solver of the Newton steps}
+///     \cgalParamType{a model of `SparseSolverTraits`}
 ///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_number_of_iterations}
 ///     \cgalParamDescription{cap on Newton iterations}
+///     \cgalParamType{an integral type (`std::size_t`)}
 ///     \cgalParamDefault{`10000`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{gradient_tolerance}
 ///     \cgalParamDescription{stop when the scale-free squared gradient norm falls below it}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1e-12`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{time_limit}
@@ -208,6 +216,7 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///   \cgalParamNBegin{distortion_bound}
 ///     \cgalParamDescription{not enforced here: `Optimization_result::bound_met` says whether the result
 ///       meets it (E_SD at the optimal uniform scale for a scale-invariant energy)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`4.1`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
