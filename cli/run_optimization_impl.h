@@ -32,34 +32,28 @@ template <typename Energy>
 SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map seams,
                                           const Optimization_request& request, const Energy& energy)
 {
-  // Packs are joined from the right, one parameter at a time: in the
-  // package's parameters.h, combine() of a pack of three or more parameters
-  // with another silently drops some of them (a lookup inside append()).
   namespace NP = SMSO::parameters;
-  const auto common = NP::combine(
-    NP::energy(energy),
-    NP::combine(NP::use_uv_map_as_initial(request.use_input_uv),
-                NP::combine(NP::edge_is_seam_map(seams),
-                            NP::combine(NP::maximum_number_of_iterations(request.iteration_cap),
-                                        NP::time_limit(request.time_limit > 0
-                                                         ? request.time_limit
-                                                         : std::numeric_limits<double>::infinity())))));
+  const auto common = NP::energy(energy)
+                        .use_uv_map_as_initial(request.use_input_uv)
+                        .edge_is_seam_map(seams)
+                        .maximum_number_of_iterations(request.iteration_cap)
+                        .time_limit(request.time_limit > 0 ? request.time_limit
+                                                           : std::numeric_limits<double>::infinity());
   Function_visitor visitor{&request.progress};
-  const auto with_visitor = NP::combine(
-    NP::bijective(request.bijective), NP::combine(CGAL::parameters::visitor(std::ref(visitor)), common));
+  const auto with_visitor = common.bijective(request.bijective).visitor(std::ref(visitor));
 
   switch(request.mode)
   {
     case Mode::KEEP_SEAMS:
       return SMSO::minimize_distortion(mesh, uvmap, common);
     case Mode::SEAM_WEIGHT:
-      return SMSO::optimize_seams(mesh, uvmap, NP::combine(NP::seam_weight(request.seam_weight), with_visitor));
+      return SMSO::optimize_seams(mesh, uvmap, with_visitor.seam_weight(request.seam_weight));
     case Mode::DISTORTION_BOUND:
       break;
   }
   return SMSO::optimize_seams(mesh, uvmap,
-                              NP::combine(NP::distortion_bound(request.distortion_bound),
-                                          NP::combine(NP::number_of_recut_rounds(request.recut_rounds), with_visitor)));
+                              with_visitor.distortion_bound(request.distortion_bound)
+                                .number_of_recut_rounds(request.recut_rounds));
 }
 
 } // namespace optimize_seams_cli
