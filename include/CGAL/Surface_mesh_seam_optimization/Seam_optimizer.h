@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,13 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   return OK;
 }
 
+// What optimize_seams() needs of a Seam_optimizer beyond its public interface.
+struct Seam_optimizer_access
+{
+  template <typename Optimizer>
+  static Cut_mesh& cut_mesh(Optimizer& o) { return o.m_cm; }
+};
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
@@ -101,12 +109,15 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam Energy a model of `DistortionEnergy`
 /// \tparam SolverTraits a model of `SparseSolverTraits`
+/// \tparam Visitor a model of `SeamOptimizationVisitor`
 template <typename TriangleMesh,
           typename Energy = Symmetric_Dirichlet_energy,
-          typename SolverTraits = Eigen_simplicial_ldlt_traits>
+          typename SolverTraits = Eigen_simplicial_ldlt_traits,
+          typename Visitor = Default_seam_optimization_visitor>
 class Seam_optimizer
 {
-  typedef internal::Alternating_optimization<Energy, SolverTraits, Default_seam_optimization_visitor> Core;
+  typedef internal::Alternating_optimization<Energy, SolverTraits, Visitor> Core;
+  friend struct internal::Seam_optimizer_access;
 
 public:
   /// Takes the same named parameters as `optimize_seams()` (but `visitor`;
@@ -116,21 +127,41 @@ public:
   Seam_optimizer(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
     : m_tm(tm)
   {
+    m_own_visitor.emplace();
+    m_visitor = &*m_own_visitor;
+    initialize(uvmap, np);
+  }
+
+  /// Same, with `visitor` called during the optimization (it must outlive
+  /// this object).
+  template <typename UVMap, typename NamedParameters = parameters::Default_named_parameters>
+  Seam_optimizer(const TriangleMesh& tm, UVMap uvmap, Visitor& visitor,
+                 const NamedParameters& np = parameters::default_values())
+    : m_tm(tm), m_visitor(&visitor)
+  {
+    initialize(uvmap, np);
+  }
+
+private:
+  template <typename UVMap, typename NamedParameters>
+  void initialize(UVMap uvmap, const NamedParameters& np)
+  {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     m_timer.start();
     m_energy = choose_parameter(get_parameter(np, internal_np::energy), Energy());
     const SolverTraits solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), SolverTraits());
-    m_status = internal::setup_seam_optimization(tm, uvmap, np, m_energy, m_cm, m_copy, m_weight, m_settings, m_message);
+    m_status = internal::setup_seam_optimization(m_tm, uvmap, np, m_energy, m_cm, m_copy, m_weight, m_settings, m_message);
     if(m_status != OK) return;
     m_initial_distortion = internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data());
-    m_core.reset(new Core(m_cm, m_energy, solver, m_weight, m_settings, m_visitor));
+    m_core.reset(new Core(m_cm, m_energy, solver, m_weight, m_settings, *m_visitor));
     m_status = m_core->start();
-    if(m_status == ERROR_OVERLAPPING_UV_MAP) m_message = internal::overlapping_initial_map_message();
     m_running = (m_status == OK);
-    // (the first descent already hit the iteration cap or the time limit: as optimize_seams() does)
-    if(!m_running && has_result(m_status)) end(m_status);
+    // (the first descent already hit the iteration cap or the time limit)
+    if(!m_running) end(m_status);
   }
+
+public:
 
   Seam_optimizer(const Seam_optimizer&) = delete;
   Seam_optimizer& operator=(const Seam_optimizer&) = delete;
@@ -166,8 +197,8 @@ public:
     r.status = m_status;
     r.message = m_message;
     if(!m_core) return r;
+    if(!has_result(m_status)) return r;
     internal::measure_result(m_cm, m_energy, m_settings.distortion_bound, r);
-    if(m_settings.fixed_lambda) r.bound_met = false;
     r.initial_distortion = m_initial_distortion;
     r.lambda = m_core->lambda();
     r.iterations = m_core->iterations();
@@ -203,7 +234,10 @@ private:
   {
     m_status = m_core->finish(status);
     m_running = false;
-    if(has_result(m_status) && internal::count_invalid_uv_triangles(m_cm, &m_message) > 0)
+    if(!has_result(m_status))
+      m_message = m_status == ERROR_OVERLAPPING_UV_MAP ? internal::overlapping_initial_map_message()
+                                                       : "the optimization failed";
+    else if(internal::count_invalid_uv_triangles(m_cm, &m_message) > 0)
       m_status = ERROR_DEGENERATE_UV_RESULT;
   }
 
@@ -213,7 +247,8 @@ private:
   internal::Face_graph_copy<TriangleMesh> m_copy;
   std::vector<double> m_weight;
   internal::Alternating_settings m_settings;
-  Default_seam_optimization_visitor m_visitor;
+  std::optional<Visitor> m_own_visitor; // (none when the user gave one)
+  Visitor* m_visitor;
   std::unique_ptr<Core> m_core;
   Error_code m_status = OK;
   std::string m_message;

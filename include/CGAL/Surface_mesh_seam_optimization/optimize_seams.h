@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <functional>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -145,9 +146,10 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   CGAL::Real_timer timer;
   timer.start();
   Optimization_result result;
-  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
-  auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                 Eigen_simplicial_ldlt_traits());
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
+                                                 Symmetric_Dirichlet_energy()))> Energy;
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
+                                                 Eigen_simplicial_ldlt_traits()))> Solver;
   auto visitor_holder = internal::visitor_parameter(np); // a copy of a visitor passed by value
   auto& visitor = internal::unwrap_visitor(visitor_holder);
 
@@ -159,48 +161,21 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     if(result.status != OK) return result;
   }
 
-  internal::Alternating_settings settings;
-  internal::Cut_mesh cm;
-  internal::Face_graph_copy<TriangleMesh> copy;
-  std::vector<double> weight;
-  result.status = internal::setup_seam_optimization(tm, uvmap, np, energy, cm, copy, weight, settings, result.message);
-  if(result.status != OK) return result;
-
-  result.initial_distortion = internal::total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
-
-  typedef std::remove_cv_t<decltype(energy)> Energy;
   typedef std::remove_reference_t<decltype(visitor)> Visitor;
-  internal::Alternating_optimization<Energy, decltype(solver), Visitor> optimizer(cm, energy, solver, weight,
-                                                                                  settings, visitor);
-  result.status = optimizer.run();
-  if(!has_result(result.status))
-  {
-    result.message = result.status == ERROR_OVERLAPPING_UV_MAP ? internal::overlapping_initial_map_message()
-                                                                : "the optimization failed";
-    return result;
-  }
-
-  // (a last check before anything is written)
-  if(internal::count_invalid_uv_triangles(cm, &result.message) > 0)
-  {
-    result.status = ERROR_DEGENERATE_UV_RESULT;
-    return result;
-  }
-  internal::measure_result(cm, energy, settings.distortion_bound, result);
+  // one place runs the optimization and fills the result: Seam_optimizer
+  Seam_optimizer<TriangleMesh, Energy, Solver, Visitor> optimizer(tm, uvmap, visitor, np);
+  result = optimizer.run();
+  if(!has_result(result.status)) return result;
   if(pack)
   {
     Chart_packing_result packed;
-    const Error_code ec = internal::pack_cut_mesh(cm, packing, packed, result.message);
+    const Error_code ec =
+      internal::pack_cut_mesh(internal::Seam_optimizer_access::cut_mesh(optimizer), packing, packed, result.message);
     if(ec != OK) { result.status = ec; return result; }
   }
-  internal::write_uv_map(cm, copy, uvmap);
+  optimizer.write_uv_map(uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-    internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  result.lambda = optimizer.lambda();
-  result.iterations = optimizer.iterations();
-  result.topology_operations = optimizer.topology_operations();
-  result.scaffold_rebuilds = optimizer.scaffold_rebuilds();
-  result.timings = optimizer.timings();
+    optimizer.write_seam_map(get_parameter(np, internal_np::edge_is_seam_map));
   result.seconds = timer.time();
   return result;
 }
