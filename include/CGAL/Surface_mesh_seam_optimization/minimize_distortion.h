@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_maps.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
@@ -302,7 +303,9 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
   // no bound is enforced here; say whether the result meets the one given (default 4.1)
-  internal::measure_result(cm, energy, choose_parameter(get_parameter(np, internal_np::distortion_bound), 4.1), result);
+  const double bound = choose_parameter(get_parameter(np, internal_np::distortion_bound),
+                                        internal::default_distortion_bound);
+  internal::measure_result(cm, energy, bound, result);
   result.seconds = timer.time();
   return result;
 }

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Candidate_ranking.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Chart_layout.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Detach_faces.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
@@ -51,7 +52,7 @@ inline const char* overlapping_initial_map_message()
 
 struct Alternating_settings
 {
-  double distortion_bound = 4.1;
+  double distortion_bound = default_distortion_bound;
   bool fixed_lambda = false;
   double lambda = 0.999;            // initial (bound mode) or fixed value
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
