@@ -17,6 +17,7 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_TO_DISK_H
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -231,14 +232,12 @@ private:
         weight[i] = dist[m_edges[i].u] + dist[m_edges[i].v] + m_edges[i].length;
       }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weight[a] > weight[b]; });
-    std::vector<int> parent(m_dual_faces);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int i) { while(parent[i] != i) i = parent[i] = parent[parent[i]]; return i; };
+    Union_find dual(m_dual_faces);
     std::vector<int> generators;
     for(int i : order)
     {
-      const int a = find(m_edges[i].f1), b = find(m_edges[i].f2);
-      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
+      const int a = dual.find(m_edges[i].f1), b = dual.find(m_edges[i].f2);
+      if(a != b) dual.unite(a, b);
       else generators.push_back(i);
     }
     if(int(generators.size()) != 2 * m_genus) return false;
@@ -353,17 +352,11 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
   }
 
   // Filled vertices: corners joined across uncut sides.
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int i) { while(parent[i] != i) i = parent[i] = parent[parent[i]]; return i; };
+  Union_find filled(n);
   for(int c = 0; c < n; ++c)
   {
     const int nx = Flat_chart::next(c);
-    if(!fcut[nx] && fopp[nx] >= 0)
-    {
-      const int a = find(c), b = find(fopp[nx]);
-      if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b);
-    }
+    if(!fcut[nx] && fopp[nx] >= 0) filled.unite(c, fopp[nx]);
   }
 
   // Corner of the filled chart -> a point.
@@ -388,7 +381,7 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
   std::vector<char> made(n, 0);
   for(int c = 0; c < n; ++c)
   {
-    const int r = find(c);
+    const int r = filled.find(c);
     if(made[r]) continue;
     made[r] = 1;
     const std::array<double, 3> p = point_of(c);
@@ -396,8 +389,8 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
   }
   for(int f = 0; f < F + n_fan; ++f)
   {
-    const vertex_descriptor a = vertex_of[find(3 * f)], b = vertex_of[find(3 * f + 1)],
-                            c = vertex_of[find(3 * f + 2)];
+    const vertex_descriptor a = vertex_of[filled.find(3 * f)], b = vertex_of[filled.find(3 * f + 1)],
+                            c = vertex_of[filled.find(3 * f + 2)];
     if(disk.add_face(a, b, c) == Disk::null_face()) return false;
   }
   // One border, the circle's.
@@ -421,7 +414,7 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
   for(int i = 0; i < F; ++i)
     for(int k = 0; k < 3; ++k)
     {
-      const K::Point_2 p = get(uvpm, vertex_of[find(3 * i + k)]);
+      const K::Point_2 p = get(uvpm, vertex_of[filled.find(3 * i + k)]);
       uv[3 * faces[i] + k] = {{ p.x(), p.y() }};
     }
   return true;

@@ -9,6 +9,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -136,26 +137,20 @@ Error_code copy_face_graph(const TriangleMesh& tm, VertexPointMap vpm, Cut_mesh&
 inline void label_uv_vertices(Cut_mesh& cm, const std::vector<char>& seam)
 {
   const std::size_t nc = cm.corner_vertex.size();
-  std::vector<int> parent(nc);
-  for(std::size_t c = 0; c < nc; ++c) parent[c] = int(c);
-  auto find = [&parent](int x) {
-    while(parent[x] != x) { parent[x] = parent[parent[x]]; x = parent[x]; }
-    return x;
-  };
-  auto unite = [&](int a, int b) { a = find(a); b = find(b); if(a != b) parent[(std::max)(a, b)] = (std::min)(a, b); };
+  Union_find uf(nc);
   for(std::size_t h = 0; h < nc; ++h)
   {
     const int o = cm.opposite[h];
     if(o < int(h) || seam[h]) continue;
-    unite(int(h), Cut_mesh::prev(o));            // target of h == source of o
-    unite(Cut_mesh::prev(int(h)), o);            // source of h == target of o
+    uf.unite(int(h), Cut_mesh::prev(o));         // target of h == source of o
+    uf.unite(Cut_mesh::prev(int(h)), o);         // source of h == target of o
   }
   cm.corner_uv.assign(nc, -1);
   cm.uv_vertex.clear();
   std::vector<int> id(nc, -1);
   for(std::size_t c = 0; c < nc; ++c)
   {
-    const int r = find(int(c));
+    const int r = uf.find(int(c));
     if(id[r] < 0) { id[r] = int(cm.uv_vertex.size()); cm.uv_vertex.push_back(cm.corner_vertex[c]); }
     cm.corner_uv[c] = id[r];
   }
