@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Chart_layout.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
@@ -726,29 +727,15 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     for(int c = 0; c < nc; ++c)
       if(extra[c] && c < copp[c]) slit_edges.push_back(edge(H[c], tm));
 
-    // Grid of charts in face order; a column is as wide as its widest chart.
-    const int n_cols = static_cast<int>(std::ceil(std::sqrt(double(n_charts))));
-    const int n_rows = (n_charts + n_cols - 1) / n_cols;
-    std::vector<double> col_w(n_cols, 0), row_h(n_rows, 0);
-    double largest = 0;
-    for(int k = 0; k < n_charts; ++k)
-    {
-      const double w = hi[k][0] - lo[k][0], h = hi[k][1] - lo[k][1];
-      col_w[k % n_cols] = (std::max)(col_w[k % n_cols], w);
-      row_h[k / n_cols] = (std::max)(row_h[k / n_cols], h);
-      largest = (std::max)({ largest, w, h });
-    }
-    const double gap = 0.05 * largest;
-    std::vector<double> col_x(n_cols, 0), row_y(n_rows, 0);
-    for(int i = 1; i < n_cols; ++i) col_x[i] = col_x[i - 1] + col_w[i - 1] + gap;
-    for(int i = 1; i < n_rows; ++i) row_y[i] = row_y[i - 1] + row_h[i - 1] + gap;
+    // Grid of charts in face order.
+    const std::vector<UV> corner = internal::grid_layout(lo, hi);
 
     // ---- write (nothing was written before this point)
     for(int c = 0; c < nc; ++c)
     {
       const int k = chart_of_face[c / 3];
-      put(uvmap, H[c], Point_2(uv[c][0] - lo[k][0] + col_x[k % n_cols],
-                               uv[c][1] - lo[k][1] + row_y[k / n_cols]));
+      put(uvmap, H[c], Point_2(uv[c][0] - lo[k][0] + corner[k][0],
+                               uv[c][1] - lo[k][1] + corner[k][1]));
     }
     for(edge_descriptor e : slit_edges)
       put(seam_map, e, true);

@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -43,29 +44,24 @@ inline std::size_t uv_components(const Cut_mesh& cm, std::vector<int>& component
   return std::size_t(n);
 }
 
-// Translates the UV components onto a grid (a column as wide as its widest
-// component, gaps of 5% of the largest extent), in the order of their first
-// UV vertex. The energies do not see where a component lies, so this moves
-// nothing but overlaps between components. Returns the number of components.
-inline std::size_t lay_out_uv_components(Cut_mesh& cm)
+// Where the lower-left corner of each box [lo[k], hi[k]] goes on a grid of
+// ceil(sqrt(n)) columns filled row by row, in order: a column as wide as its
+// widest box, a row as high as its highest, gaps of 5% of the largest extent.
+// The initial map lays out its charts with it and lay_out_uv_components() the
+// UV components, so the two give the same grid.
+inline std::vector<std::array<double, 2> > grid_layout(const std::vector<std::array<double, 2> >& lo,
+                                                       const std::vector<std::array<double, 2> >& hi)
 {
-  std::vector<int> component;
-  const std::size_t n = uv_components(cm, component);
-  if(n < 2) return n;
-  std::vector<double> lo(2 * n, HUGE_VAL), hi(2 * n, -HUGE_VAL);
-  for(std::size_t u = 0; u < component.size(); ++u)
-    for(int d = 0; d < 2 && component[u] >= 0; ++d)
-    {
-      lo[2 * component[u] + d] = (std::min)(lo[2 * component[u] + d], cm.uv[2 * u + d]);
-      hi[2 * component[u] + d] = (std::max)(hi[2 * component[u] + d], cm.uv[2 * u + d]);
-    }
+  const std::size_t n = lo.size();
+  std::vector<std::array<double, 2> > corner(n);
+  if(n == 0) return corner;
   const std::size_t n_cols = std::size_t(std::ceil(std::sqrt(double(n))));
   const std::size_t n_rows = (n + n_cols - 1) / n_cols;
   std::vector<double> col_w(n_cols, 0), row_h(n_rows, 0);
   double largest = 0;
   for(std::size_t k = 0; k < n; ++k)
   {
-    const double w = hi[2 * k] - lo[2 * k], h = hi[2 * k + 1] - lo[2 * k + 1];
+    const double w = hi[k][0] - lo[k][0], h = hi[k][1] - lo[k][1];
     col_w[k % n_cols] = (std::max)(col_w[k % n_cols], w);
     row_h[k / n_cols] = (std::max)(row_h[k / n_cols], h);
     largest = (std::max)({ largest, w, h });
@@ -74,12 +70,34 @@ inline std::size_t lay_out_uv_components(Cut_mesh& cm)
   std::vector<double> col_x(n_cols, 0), row_y(n_rows, 0);
   for(std::size_t i = 1; i < n_cols; ++i) col_x[i] = col_x[i - 1] + col_w[i - 1] + gap;
   for(std::size_t i = 1; i < n_rows; ++i) row_y[i] = row_y[i - 1] + row_h[i - 1] + gap;
+  for(std::size_t k = 0; k < n; ++k) corner[k] = std::array<double, 2>{{ col_x[k % n_cols], row_y[k / n_cols] }};
+  return corner;
+}
+
+// Translates the UV components onto the grid of grid_layout(), in the order
+// of their first UV vertex. The energies do not see where a component lies,
+// so this moves nothing but overlaps between components. Returns the number
+// of components.
+inline std::size_t lay_out_uv_components(Cut_mesh& cm)
+{
+  std::vector<int> component;
+  const std::size_t n = uv_components(cm, component);
+  if(n < 2) return n;
+  std::vector<std::array<double, 2> > lo(n, std::array<double, 2>{{ HUGE_VAL, HUGE_VAL }}),
+                                      hi(n, std::array<double, 2>{{ -HUGE_VAL, -HUGE_VAL }});
+  for(std::size_t u = 0; u < component.size(); ++u)
+    for(int d = 0; d < 2 && component[u] >= 0; ++d)
+    {
+      lo[component[u]][d] = (std::min)(lo[component[u]][d], cm.uv[2 * u + d]);
+      hi[component[u]][d] = (std::max)(hi[component[u]][d], cm.uv[2 * u + d]);
+    }
+  const std::vector<std::array<double, 2> > corner = grid_layout(lo, hi);
   for(std::size_t u = 0; u < component.size(); ++u)
   {
     if(component[u] < 0) continue;
     const std::size_t k = std::size_t(component[u]);
-    cm.uv[2 * u] += col_x[k % n_cols] - lo[2 * k];
-    cm.uv[2 * u + 1] += row_y[k / n_cols] - lo[2 * k + 1];
+    cm.uv[2 * u] += corner[k][0] - lo[k][0];
+    cm.uv[2 * u + 1] += corner[k][1] - lo[k][1];
   }
   return n;
 }
