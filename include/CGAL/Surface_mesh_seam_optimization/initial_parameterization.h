@@ -222,13 +222,13 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     const double* a = P[cv[3 * f]].data();
     const double* b = P[cv[3 * f + 1]].data();
     const double* c = P[cv[3 * f + 2]].data();
-    if(internal::is_degenerate_triangle(a, b, c))
+    const internal::Triangle_area_test t = internal::test_triangle_area(a, b, c);
+    if(t.is_degenerate)
     {
       message = "face " + std::to_string(f) + " (numbered from 0) has a (numerically) zero area";
       return ERROR_DEGENERATE_TRIANGLE;
     }
-    const double twice_area = internal::twice_triangle_area(a, b, c);
-    area3[f] = 0.5 * twice_area;
+    area3[f] = 0.5 * t.twice_area;
   }
 
   // ---- manifold vertices: the corners at a vertex form one fan (ignoring seams)

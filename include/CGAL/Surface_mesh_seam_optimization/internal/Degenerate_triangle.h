@@ -28,15 +28,29 @@ inline double twice_triangle_area(const double* a, const double* b, const double
   return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
 }
 
-// Twice its area at most degenerate_triangle_threshold() times its longest
-// edge squared (or not a number): scale- and position-free.
-inline bool is_degenerate_triangle(const double* a, const double* b, const double* c)
+// Twice the area of a triangle and whether it is degenerate, for callers
+// that need both (one cross product).
+struct Triangle_area_test
+{
+  double twice_area;
+  bool is_degenerate;
+};
+
+// Degenerate: twice its area at most degenerate_triangle_threshold() times its
+// longest edge squared (or not a number): scale- and position-free.
+inline Triangle_area_test test_triangle_area(const double* a, const double* b, const double* c)
 {
   auto sq = [](const double* p, const double* q) {
     return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
   };
   const double lmax2 = (std::max)({ sq(a, b), sq(b, c), sq(c, a) });
-  return !(twice_triangle_area(a, b, c) > degenerate_triangle_threshold() * lmax2);
+  const double twice_area = twice_triangle_area(a, b, c);
+  return Triangle_area_test{ twice_area, !(twice_area > degenerate_triangle_threshold() * lmax2) };
+}
+
+inline bool is_degenerate_triangle(const double* a, const double* b, const double* c)
+{
+  return test_triangle_area(a, b, c).is_degenerate;
 }
 
 } // namespace internal
