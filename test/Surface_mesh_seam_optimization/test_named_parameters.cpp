@@ -9,6 +9,7 @@
 // The package's header before any CGAL mesh header: each header includes what it uses.
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -21,7 +22,12 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -52,6 +58,106 @@ struct Plain_counting_visitor
   bool on_iteration(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
   bool on_topology_operation(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
   bool on_lambda_update(const SMSO::Seam_optimization_progress&) { ++calls; return true; }
+};
+
+// ---- Concept archetypes: exactly the members that the concepts of the manual
+// (doc/Surface_mesh_seam_optimization/Concepts) require, nothing the package's
+// own models add (no internal::Isotropic_energy base, no eigen_solver()), so
+// that code relying on an undocumented member fails to compile here.
+
+// DistortionEnergy: psi(J) = |J|_F^2 + det(J)^-2, a barrier whose minimum, 3,
+// is reached at rotations; gradient and Hessian by hand, projected by an
+// eigendecomposition.
+class Distortion_energy_archetype
+{
+public:
+  double value(const Eigen::Matrix2d& J) const
+  {
+    const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+    if(!(det > 0)) return std::numeric_limits<double>::infinity();
+    return J.squaredNorm() + 1 / (det * det);
+  }
+  double value_and_gradient(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ) const
+  {
+    const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+    dJ = 2 * J - 2 / (det * det * det) * d_det(J);
+    return value(J);
+  }
+  double value_gradient_and_hessian(const Eigen::Matrix2d& J, Eigen::Matrix2d& dJ, Eigen::Matrix4d& H,
+                                    bool project = true) const
+  {
+    const double v = value_and_gradient(J, dJ);
+    const double det = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+    const Eigen::Matrix2d C = d_det(J);
+    const Eigen::Vector4d c(C(0, 0), C(1, 0), C(0, 1), C(1, 1)); // vec(d det / dJ), column-major
+    Eigen::Matrix4d dc = Eigen::Matrix4d::Zero();                  // d vec(C) / d vec(J)
+    dc(0, 3) = dc(3, 0) = 1;
+    dc(1, 2) = dc(2, 1) = -1;
+    H = 2 * Eigen::Matrix4d::Identity() + 6 / (det * det * det * det) * c * c.transpose() - 2 / (det * det * det) * dc;
+    if(project)
+    {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> es(H);
+      H = es.eigenvectors() * es.eigenvalues().cwiseMax(0.).asDiagonal() * es.eigenvectors().transpose();
+    }
+    return v;
+  }
+  static constexpr double minimum_value() { return 3.0; }
+  const char* name() const { return "archetype"; }
+
+private:
+  static Eigen::Matrix2d d_det(const Eigen::Matrix2d& J)
+  {
+    Eigen::Matrix2d C;
+    C << J(1, 1), -J(1, 0),
+         -J(0, 1), J(0, 0);
+    return C;
+  }
+};
+
+// SparseSolverTraits: Eigen's LDL^T behind the three documented operations;
+// copies share the solver and a count of factorizations.
+class Sparse_solver_traits_archetype
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  Sparse_solver_traits_archetype()
+    : m_solver(std::make_shared<Eigen::SimplicialLDLT<Matrix, Eigen::Lower> >()),
+      m_factorizations(std::make_shared<std::size_t>(0))
+  {}
+  bool analyze_pattern(const Matrix& A)
+  {
+    m_solver->analyzePattern(A);
+    return m_solver->info() == Eigen::Success;
+  }
+  bool factorize(const Matrix& A)
+  {
+    ++*m_factorizations;
+    m_solver->factorize(A);
+    return m_solver->info() == Eigen::Success;
+  }
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x)
+  {
+    x = m_solver->solve(b);
+    return m_solver->info() == Eigen::Success && x.allFinite();
+  }
+
+  std::size_t factorizations() const { return *m_factorizations; } // for the test, not part of the concept
+
+private:
+  std::shared_ptr<Eigen::SimplicialLDLT<Matrix, Eigen::Lower> > m_solver;
+  std::shared_ptr<std::size_t> m_factorizations;
+};
+
+// SeamOptimizationVisitor: the three callbacks, counted.
+class Seam_optimization_visitor_archetype
+{
+public:
+  bool on_iteration(const SMSO::Seam_optimization_progress&) { ++iterations; return true; }
+  bool on_topology_operation(const SMSO::Seam_optimization_progress&) { ++topology_operations; return true; }
+  bool on_lambda_update(const SMSO::Seam_optimization_progress&) { ++lambda_updates; return true; }
+
+  std::size_t iterations = 0, topology_operations = 0, lambda_updates = 0;
 };
 
 typedef CGAL::Simple_cartesian<double> K;
@@ -186,4 +292,52 @@ BOOST_AUTO_TEST_CASE(cgal_vertex_point_map_chains_on_a_Polyhedron_3)
   std::size_t seam_edges = 0;
   for(edge_descriptor e : edges(mesh)) seam_edges += get(seams, e) ? 1 : 0;
   BOOST_TEST(seam_edges > 0u); // a closed cube is cut
+}
+
+BOOST_AUTO_TEST_CASE(concept_archetypes)
+{
+  // One right triangle, legs 1, with UVs stretching it by 2 along u:
+  // J = diag(2, 1) in any orthonormal frame, psi = 4 + 1 + 1 / 2^2 = 5.25.
+  Surface_mesh tri;
+  const Surface_mesh::Vertex_index a = tri.add_vertex(K::Point_3(0, 0, 0)), b = tri.add_vertex(K::Point_3(1, 0, 0)),
+                                   c = tri.add_vertex(K::Point_3(0, 1, 0));
+  tri.add_face(a, b, c);
+  auto uv = tri.add_property_map<SM_halfedge, K::Point_2>("h:uv").first;
+  for(SM_halfedge h : halfedges_around_face(halfedge(*faces(tri).begin(), tri), tri))
+  {
+    const K::Point_3& p = tri.point(target(h, tri));
+    put(uv, h, K::Point_2(2 * p.x(), p.y()));
+  }
+  BOOST_TEST(SMSO::distortion(tri, uv, SMSO_np::energy(Distortion_energy_archetype())) == 5.25,
+             boost::test_tools::tolerance(1e-12));
+
+  // minimize_distortion() with the energy and the solver archetypes: the
+  // triangle ends up a rotation of itself, psi = 3 and E_SD = 4.
+  Sparse_solver_traits_archetype solver;
+  const SMSO::Optimization_result m = SMSO::minimize_distortion(
+    tri, uv, SMSO_np::energy(Distortion_energy_archetype()).sparse_linear_solver(solver));
+  BOOST_TEST_MESSAGE("archetypes, minimize_distortion: " << SMSO::get_error_code_name(m.status) << " " << m.message
+                     << ", E_SD " << m.distortion << ", " << m.iterations << " iterations, "
+                     << solver.factorizations() << " factorizations");
+  BOOST_TEST_REQUIRE(m.status == SMSO::OK);
+  BOOST_TEST(solver.factorizations() > 0u);
+  BOOST_TEST(SMSO::distortion(tri, uv, SMSO_np::energy(Distortion_energy_archetype())) == 3.,
+             boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(m.distortion == 4., boost::test_tools::tolerance(1e-6));
+
+  // optimize_seams() with all three on the closed cube.
+  Sparse_solver_traits_archetype seam_solver;
+  Seam_optimization_visitor_archetype visitor;
+  double recomputed = 0;
+  const SMSO::Optimization_result r = run_on_cube(
+    SMSO_np::energy(Distortion_energy_archetype()).sparse_linear_solver(seam_solver).visitor(std::ref(visitor)),
+    recomputed);
+  BOOST_TEST_MESSAGE("archetypes, optimize_seams: " << visitor.iterations << " iterations, "
+                     << visitor.topology_operations << " topology operations, " << visitor.lambda_updates
+                     << " lambda updates, " << seam_solver.factorizations() << " factorizations");
+  BOOST_TEST_REQUIRE(r.has_result());
+  BOOST_TEST(visitor.iterations > 0u);
+  BOOST_TEST(visitor.iterations == r.iterations); // one call per Newton iteration, as the concept says
+  BOOST_TEST(seam_solver.factorizations() > 0u);
+  BOOST_TEST(r.charts > 0u);
 }

@@ -26,6 +26,11 @@ area non-positive, so gradients and Hessians are only requested where
 Matrices in \f$J\f$-space are flattened column-major:
 vec(J) = (J(0,0), J(1,0), J(0,1), J(1,1)), the storage order of `Eigen::Matrix2d`.
 
+A model is default constructible, copy constructible and copy assignable:
+it is passed by value (named parameter `energy`), and
+`CGAL::Surface_mesh_seam_optimization::Seam_optimizer` holds
+a default-constructed one until it assigns the given one.
+
 The models of the package are isotropic (\f$\psi\f$ depends on the singular
 values \f$\sigma_1, \sigma_2\f$ of \f$J\f$ only) and project their Hessians
 through a closed-form eigensystem; a user model may compute its Hessian in any
