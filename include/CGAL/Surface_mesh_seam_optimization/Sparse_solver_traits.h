@@ -64,8 +64,11 @@ typedef Eigen_sparse_solver_traits<
 
 #if defined(CGAL_SMSO_HAS_CHOLMOD) || defined(DOXYGEN_RUNNING)
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// SuiteSparse CHOLMOD (supernodal or simplicial, chosen by CHOLMOD);
-/// available when the package is built with CHOLMOD (`CGAL_SMSO_HAS_CHOLMOD`).
+/// SuiteSparse CHOLMOD (supernodal or simplicial, chosen by CHOLMOD).
+/// Declared only if the macro `CGAL_SMSO_HAS_CHOLMOD` is defined: the CMake
+/// target `CGAL::Surface_mesh_seam_optimization` defines it (and links
+/// CHOLMOD) when CHOLMOD was found; without that target, define it, add
+/// SuiteSparse's include directory and link `cholmod` (see \ref SMSO_Extending).
 typedef Eigen_sparse_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> >
   Cholmod_traits;
 #endif
