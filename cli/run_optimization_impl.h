@@ -36,7 +36,7 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
   const auto common = NP::energy(energy)
                         .use_uv_map_as_initial(request.use_input_uv)
                         .edge_is_seam_map(seams)
-                        .maximum_number_of_iterations(request.iteration_cap)
+                        .number_of_iterations(request.iteration_cap)
                         .time_limit(request.time_limit > 0 ? request.time_limit
                                                            : std::numeric_limits<double>::infinity());
   Function_visitor visitor{&request.progress};

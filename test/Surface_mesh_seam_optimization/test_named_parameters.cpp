@@ -341,3 +341,41 @@ BOOST_AUTO_TEST_CASE(concept_archetypes)
   BOOST_TEST(seam_solver.factorizations() > 0u);
   BOOST_TEST(r.charts > 0u);
 }
+
+BOOST_AUTO_TEST_CASE(number_of_iterations_is_cgal_s_and_the_old_name_still_works)
+{
+  double recomputed = 0;
+  const SMSO::Optimization_result free_run = run_on_cube(SMSO_np::number_of_recut_rounds(0), recomputed);
+  BOOST_TEST_REQUIRE(free_run.status == SMSO::OK);
+  const std::size_t cap = free_run.iterations / 2;
+  BOOST_TEST_REQUIRE(cap > 0u);
+
+  // CGAL's parameter, chained or from CGAL's own namespace, and the deprecated alias: the same cap
+  const SMSO::Optimization_result cgal = run_on_cube(SMSO_np::number_of_recut_rounds(0).number_of_iterations(cap),
+                                                     recomputed);
+  BOOST_TEST(cgal.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
+  BOOST_TEST(cgal.iterations <= cap);
+  const SMSO::Optimization_result from_cgal =
+    run_on_cube(SMSO_np::combine(CGAL::parameters::number_of_iterations(cap), SMSO_np::number_of_recut_rounds(0)),
+                recomputed);
+  BOOST_TEST(from_cgal.iterations == cgal.iterations);
+  const SMSO::Optimization_result old =
+    run_on_cube(SMSO_np::number_of_recut_rounds(0).maximum_number_of_iterations(cap), recomputed);
+  BOOST_TEST(old.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
+  BOOST_TEST(old.iterations == cgal.iterations);
+  // both given: CGAL's name wins, whichever comes last
+  const SMSO::Optimization_result both = run_on_cube(
+    SMSO_np::number_of_iterations(cap).maximum_number_of_iterations(std::size_t(100000)).number_of_recut_rounds(0),
+    recomputed);
+  BOOST_TEST(both.iterations == cgal.iterations);
+
+  // minimize_distortion() reads it too
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(cube, sm));
+  auto uv = sm.add_property_map<SM_halfedge, K::Point_2>("h:uv").first;
+  const SMSO::Optimization_result m = SMSO::minimize_distortion(sm, uv, SMSO_np::number_of_iterations(1));
+  BOOST_TEST(m.iterations <= 1u);
+  const SMSO::Optimization_result m_old = SMSO::minimize_distortion(sm, uv, SMSO_np::maximum_number_of_iterations(1));
+  BOOST_TEST(m_old.iterations == m.iterations);
+  BOOST_TEST(m_old.distortion == m.distortion);
+}

@@ -198,8 +198,9 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 ///     \cgalParamType{a model of `SparseSolverTraits`}
 ///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_number_of_iterations}
-///     \cgalParamDescription{cap on Newton iterations}
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{cap on Newton iterations (CGAL's parameter; `maximum_number_of_iterations`, the
+///       package's former name for it, is a deprecated alias, read when `number_of_iterations` is not given)}
 ///     \cgalParamType{an integral type (`std::size_t`)}
 ///     \cgalParamDefault{`10000`}
 ///   \cgalParamNEnd
@@ -242,7 +243,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                  Eigen_simplicial_ldlt_traits());
   const std::size_t max_iterations =
-    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations), std::size_t(10000));
+    internal::number_of_iterations_parameter(np, std::size_t(10000));
   internal::Newton_settings settings;
   settings.gradient_tolerance =
     choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);

@@ -99,8 +99,9 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamType{a model of `SeamOptimizationVisitor`, or `std::reference_wrapper` of one}
 ///     \cgalParamDefault{`Default_seam_optimization_visitor`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{maximum_number_of_iterations}
-///     \cgalParamDescription{cap on Newton iterations}
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{cap on Newton iterations, in total (CGAL's parameter; `maximum_number_of_iterations`,
+///       the package's former name for it, is a deprecated alias, read when `number_of_iterations` is not given)}
 ///     \cgalParamType{`std::size_t` (any integral type)}
 ///     \cgalParamDefault{`100000`}
 ///   \cgalParamNEnd
@@ -110,7 +111,7 @@ namespace Surface_mesh_seam_optimization {
 ///       replaced by its shortcut) while these find shorter seams; the shortest seams that meet the bound are
 ///       kept, and the rounds end at the first unzipping round that finds none shorter (more time for shorter
 ///       seams; 0 turns all of them off).
-///       Reaching `maximum_number_of_iterations` during these rounds ends them with status `OK`}
+///       Reaching `number_of_iterations` during these rounds ends them with status `OK`}
 ///     \cgalParamType{`int` (any integral type)}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd

@@ -31,6 +31,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <cstddef>
 #include <type_traits>
 
 // The package's parameters and the kind of value each takes (checked at
@@ -246,6 +247,27 @@ auto combine(const NPs&... nps)
 }
 
 } // namespace parameters
+
+namespace internal {
+
+// The cap on Newton iterations: CGAL's `number_of_iterations`, else the
+// package's former name for it, `maximum_number_of_iterations` (a deprecated
+// alias, still read); CGAL's wins if both are given.
+template <typename NamedParameters>
+std::size_t number_of_iterations_parameter(const NamedParameters& np, std::size_t default_value)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto cap = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                    choose_parameter(get_parameter(np, internal_np::maximum_number_of_iterations),
+                                                     default_value));
+  // CGAL does not check the type of its own parameters: this one must count.
+  static_assert(Accepts_count<std::decay_t<decltype(cap)> >::value,
+                "parameters::number_of_iterations(): the value must be an integer (an integral type other than bool)");
+  return std::size_t(cap);
+}
+
+} // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL
 
