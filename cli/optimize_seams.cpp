@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/seams_from_uv_map.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -57,12 +58,15 @@ const char* const program_name = "optimize_seams";
 
 enum Exit_status { EXIT_OK = 0, EXIT_RUN_FAILED = 1, EXIT_USAGE = 2 };
 
-// Always passed to the library, so --help can state the cap in force; the
-// same values as the library's own defaults for each mode.
-const std::size_t default_max_iterations_seams = 100000;   // optimize_seams()
-const std::size_t default_max_iterations_keep = 10000;     // minimize_distortion()
-const std::size_t default_recut_rounds = 6;                 // number_of_recut_rounds()
-const double default_distortion_bound = 4.1;
+// The library's defaults (internal/Defaults.h, Packing_settings), so that
+// --help states them and the cap in force is always passed to the library.
+const std::size_t default_max_iterations_seams = SMSO::internal::default_number_of_iterations;       // optimize_seams()
+const std::size_t default_max_iterations_keep =
+  SMSO::internal::default_number_of_iterations_distortion_only;                                     // minimize_distortion()
+const std::size_t default_recut_rounds = std::size_t(SMSO::internal::default_number_of_recut_rounds);
+const double default_distortion_bound = SMSO::internal::default_distortion_bound;
+const double default_texture_size = SMSO::internal::Packing_settings().texture_size;
+const double default_margin = SMSO::internal::Packing_settings().margin;
 
 const char* mode_name(Mode m)
 {
@@ -113,8 +117,8 @@ struct Options
   std::size_t recut_rounds = default_recut_rounds; // bound mode only
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool pack = false;                      // charts packed into [0,1]^2 (SMSO::pack_charts)
-  double texture_size = 1024;             // --pack, --normalize with several charts: texels
-  double margin = 4;                      // texels between charts and to the border
+  double texture_size = default_texture_size; // --pack, --normalize with several charts: texels
+  double margin = default_margin;         // texels between charts and to the border
   bool has_packing_option = false;        // --texture-size or --margin given
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
   double time_limit = 0;                  // seconds; 0: none
@@ -181,9 +185,9 @@ void print_help(std::ostream& os)
      << "                          around each chart; the report gives the fill rate\n"
      << "                          (default: off)\n"
      << "  --texture-size N        texture side in texels for --pack, an integer >= 1\n"
-     << "                          (default: 1024)\n"
+     << "                          (default: " << default_texture_size << ")\n"
      << "  --margin M              texels between charts and to the border for --pack,\n"
-     << "                          >= 0 and < N / 2 (default: 4)\n"
+     << "                          >= 0 and < N / 2 (default: " << default_margin << ")\n"
      << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
      << "                          as found while E_SD <= B (default: " << default_distortion_bound
      << ")\n"

@@ -15,6 +15,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 
 #include <cstddef>
 #include <functional>
@@ -45,12 +46,12 @@ struct Optimization_request
 {
   Mode mode = Mode::DISTORTION_BOUND;
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
-  double distortion_bound = 4.1;   // DISTORTION_BOUND only
+  double distortion_bound = SMSO::internal::default_distortion_bound; // DISTORTION_BOUND only
   double seam_weight = 0;          // SEAM_WEIGHT only
   bool use_input_uv = false;       // start from `uvmap` and the seams in `seams`
   bool bijective = true;
   std::size_t iteration_cap = 0;
-  int recut_rounds = 6;            // DISTORTION_BOUND only
+  int recut_rounds = SMSO::internal::default_number_of_recut_rounds;  // DISTORTION_BOUND only
   double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.
   std::function<bool(const SMSO::Seam_optimization_progress&)> progress;

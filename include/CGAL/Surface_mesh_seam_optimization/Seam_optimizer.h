@@ -52,9 +52,9 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   // decrease test saves Newton iterations at no cost in seam length.
   settings.newton.relative_decrease_tolerance = 3e-6;
   settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
-  settings.max_iterations = number_of_iterations_parameter(np, Alternating_settings().max_iterations);
+  settings.max_iterations = number_of_iterations_parameter(np, default_number_of_iterations);
   const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds),
-                                    Alternating_settings().recut_rounds);
+                                     default_number_of_recut_rounds);
   if(rounds < 0)
   {
     message = "number_of_recut_rounds must be >= 0";

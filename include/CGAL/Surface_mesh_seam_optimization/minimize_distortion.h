@@ -243,7 +243,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                  Eigen_simplicial_ldlt_traits());
   const std::size_t max_iterations =
-    internal::number_of_iterations_parameter(np, std::size_t(10000));
+    internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
   internal::Newton_settings settings;
   settings.gradient_tolerance =
     choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);

@@ -6,12 +6,23 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_DEFAULTS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_DEFAULTS_H
 
+#include <cstddef>
+
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
 // The bound on E_SD (4 is an isometry): the paper's default.
 constexpr double default_distortion_bound = 4.1;
+
+// Caps on Newton iterations (named parameter number_of_iterations): in total
+// for optimize_seams() and Seam_optimizer, and for minimize_distortion().
+constexpr std::size_t default_number_of_iterations = 100000;
+constexpr std::size_t default_number_of_iterations_distortion_only = 10000;
+
+// Rounds of unzipping and cutting again after the first result at the bound
+// (named parameter number_of_recut_rounds).
+constexpr int default_number_of_recut_rounds = 6;
 
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
