@@ -7,6 +7,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Alternating_optimization.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Measure_result.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Setup_seam_optimization.h>
 
 #include <CGAL/Real_timer.h>
 
@@ -19,74 +21,6 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
-
-// Reads the named parameters of the seam optimization and builds the core
-// mesh with its (rescaled) initial map; shared by optimize_seams() and
-// Seam_optimizer.
-template <typename TriangleMesh, typename UVMap, typename NamedParameters, typename Energy>
-Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
-                                   const Energy& energy, Cut_mesh& cm, Face_graph_copy<TriangleMesh>& copy,
-                                   std::vector<double>& weight, Alternating_settings& settings,
-                                   std::string& message)
-{
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-
-  settings.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), default_distortion_bound);
-  if(!(settings.distortion_bound > 4.) || !std::isfinite(settings.distortion_bound))
-  {
-    message = "distortion_bound must be a finite number > 4";
-    return ERROR_WRONG_PARAMETER;
-  }
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
-  {
-    settings.fixed_lambda = true;
-    settings.lambda = choose_parameter(get_parameter(np, internal_np::seam_weight), 0.);
-    if(!(settings.lambda >= 0. && settings.lambda < 1.))
-    {
-      message = "seam_weight must be in [0, 1)";
-      return ERROR_WRONG_PARAMETER;
-    }
-  }
-  // Stationary points between topology steps need not be polished: a looser
-  // decrease test saves Newton iterations at no cost in seam length.
-  settings.newton.relative_decrease_tolerance = 3e-6;
-  settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
-  settings.max_iterations = number_of_iterations_parameter(np, default_number_of_iterations);
-  const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds),
-                                     default_number_of_recut_rounds);
-  if(rounds < 0)
-  {
-    message = "number_of_recut_rounds must be >= 0";
-    return ERROR_WRONG_PARAMETER;
-  }
-  settings.recut_rounds = rounds;
-  if(!read_time_limit(np, settings.time_limit))
-  {
-    message = "time_limit must be > 0 seconds";
-    return ERROR_WRONG_PARAMETER;
-  }
-
-  Error_code ec = initialize_cut_mesh(tm, uvmap, np, cm, copy, message);
-  if(ec != OK) return ec;
-
-  weight.assign(cm.corner_vertex.size(), 1.);
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
-  {
-    auto wmap = get_parameter(np, internal_np::edge_seam_weight_map);
-    for(std::size_t h = 0; h < weight.size(); ++h)
-    {
-      weight[h] = double(get(wmap, edge(copy.corner_halfedge[h], tm)));
-      if(!(weight[h] >= 0) || !std::isfinite(weight[h]))
-      {
-        message = "edge_seam_weight_map has a negative or non-finite weight";
-        return ERROR_WRONG_PARAMETER;
-      }
-    }
-  }
-  rescale_to_optimal(cm, energy);
-  return OK;
-}
 
 // What optimize_seams() needs of a Seam_optimizer beyond its public interface.
 struct Seam_optimizer_access

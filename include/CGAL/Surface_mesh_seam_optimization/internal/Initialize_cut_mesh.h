@@ -1,0 +1,129 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The core mesh and its initial UV map, the user's or a computed one, shared
+// by minimize_distortion() and the seam optimization.
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_INITIALIZE_CUT_MESH_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_INITIALIZE_CUT_MESH_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
+#include <CGAL/Surface_mesh_seam_optimization/initial_parameterization.h>
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_maps.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Untangle.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// Builds the core mesh with its initial UVs: the user's map, or a computed
+// one (cut to disks along the given seams, Tutte per chart).
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                               Cut_mesh& cm, Face_graph_copy<TriangleMesh>& copy, std::string& message)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::property_traits<UVMap>::value_type Point_2;
+
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                              get_const_property_map(CGAL::vertex_point, tm));
+  Error_code ec = copy_face_graph(tm, vpm, cm, copy, message);
+  if(ec != OK) return ec;
+
+  const bool use_input = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
+  constexpr bool has_seam_map =
+    !parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value;
+
+  std::vector<char> seam;
+  std::vector<double> corner_uvs;
+
+  // the default initial map, cut along `scratch_seams` (and more, if needed)
+  auto compute_default = [&](auto scratch_seams) -> Error_code {
+    auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
+    if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::geom_traits_t>::value)
+      ec = initial_parameterization(
+        tm, scratch_seams, scratch_uv,
+        CGAL::parameters::vertex_point_map(vpm).geom_traits(get_parameter(np, CGAL::internal_np::geom_traits)),
+        message);
+    else
+      ec = initial_parameterization(tm, scratch_seams, scratch_uv, CGAL::parameters::vertex_point_map(vpm), message);
+    if(ec != OK) { message = "could not compute the initial map: " + message; return ec; }
+    read_seam_map(tm, scratch_seams, copy, cm, seam);
+    ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
+    if(ec != OK) return ec;
+    label_uv_vertices(cm, seam);
+    set_uvs_from_corners(cm, corner_uvs);
+    return OK;
+  };
+
+  if(!use_input)
+  {
+    auto scratch_seams = make_edge_vector_map<bool>(tm, false);
+    if constexpr(has_seam_map)
+    {
+      auto user_seams = get_parameter(np, internal_np::edge_is_seam_map);
+      for(auto e : edges(tm)) put(scratch_seams, e, bool(get(user_seams, e)));
+    }
+    ec = compute_default(scratch_seams);
+    if(ec != OK) return ec;
+    for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+      if(!(cm.signed_uv_area2(f) > 0))
+      {
+        message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
+        return ERROR_FLIPPED_UV_TRIANGLE;
+      }
+    return OK;
+  }
+
+  ec = read_uv_map(tm, uvmap, copy, corner_uvs, message);
+  if(ec != OK) return ec;
+  if constexpr(has_seam_map)
+    read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
+  else
+    seams_from_corner_uvs(cm, corner_uvs, seam);
+  label_uv_vertices(cm, seam);
+  set_uvs_from_corners(cm, corner_uvs);
+
+  // Maps of Surface_mesh_parameterization's LSCM and ARAP parameterizers
+  // usually fold a little: untangled locally, or replaced by the default map.
+  std::string which;
+  if(count_invalid_uv_triangles(cm, &which) == 0) return OK;
+  std::size_t count = 0;
+  if(untangle_uv_map(cm, count))
+  {
+    message = std::to_string(count) + " flipped or degenerate triangles of the initial UV map untangled";
+    return OK;
+  }
+  auto scratch_seams = make_edge_vector_map<bool>(tm, false);
+  for(std::size_t h = 0; h < seam.size(); ++h)
+    if(seam[h]) put(scratch_seams, edge(copy.corner_halfedge[h], tm), true);
+  std::string default_message;
+  std::swap(default_message, message);
+  if(compute_default(scratch_seams) != OK || count_invalid_uv_triangles(cm) > 0)
+  {
+    message = which + " (and neither untangling it nor the default initial map with its seams worked)";
+    return ERROR_FLIPPED_UV_TRIANGLE;
+  }
+  message = std::to_string(count) + " flipped or degenerate triangles of the initial UV map could not be "
+            "untangled: fell back to the default initial map";
+  return OK;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif
