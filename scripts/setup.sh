@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake g++ make
   libcgal-dev libeigen3-dev
-  libboost-dev libboost-graph-dev libboost-test-dev
+  libboost-dev libboost-graph-dev libboost-test-dev libboost-program-options-dev
   libsuitesparse-dev libtbb-dev libpng-dev
   doxygen python3
 )

@@ -1,0 +1,511 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// optimize_seams' command line: the options, their defaults (the library's),
+// the help, and the parser (Boost.Program_options for the syntax, the checks
+// of each value here).
+
+#ifndef SMSO_CLI_COMMAND_LINE_H
+#define SMSO_CLI_COMMAND_LINE_H
+
+#include "pictures.h"
+#include "run_optimization.h"
+
+#include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
+#include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
+
+#include <boost/program_options.hpp>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace optimize_seams_cli {
+
+const char* const program_name = "optimize_seams";
+
+// The option that collects INPUT (not to be typed: reported as unknown).
+const char* const positional_name = "INPUT";
+
+// The library's defaults (internal/Defaults.h, Packing_settings), so that
+// --help states them and the cap in force is always passed to the library.
+const std::size_t default_max_iterations_seams = SMSO::internal::default_number_of_iterations;       // optimize_seams()
+const std::size_t default_max_iterations_keep =
+  SMSO::internal::default_number_of_iterations_distortion_only;                                     // minimize_distortion()
+const std::size_t default_recut_rounds = std::size_t(SMSO::internal::default_number_of_recut_rounds);
+const double default_distortion_bound = SMSO::internal::default_distortion_bound;
+const double default_texture_size = SMSO::internal::Packing_settings().texture_size;
+const double default_margin = SMSO::internal::Packing_settings().margin;
+
+inline const char* mode_name(Mode m)
+{
+  switch(m)
+  {
+    case Mode::DISTORTION_BOUND: return "distortion-bound";
+    case Mode::SEAM_WEIGHT: return "seam-weight";
+    case Mode::KEEP_SEAMS: return "keep-seams";
+  }
+  return "unknown";
+}
+
+// --energy names, in the order of Energy_kind.
+const char* const energy_names[] = {"symmetric_dirichlet", "arap", "mips"};
+
+inline const char* energy_name(Energy_kind e) { return energy_names[static_cast<int>(e)]; }
+
+inline bool parse_energy(const std::string& s, Energy_kind& e)
+{
+  for(int i = 0; i < 3; ++i)
+    if(s == energy_names[i])
+    {
+      e = static_cast<Energy_kind>(i);
+      return true;
+    }
+  return false;
+}
+
+
+// ---------------------------------------------------------------------------
+// Options
+
+struct Options
+{
+  std::string input;
+  std::string output;          // empty: INPUT stem + "_uv.obj" in the current directory
+  std::string report;          // empty: no JSON report
+  bool keep_seams = false;
+  bool quiet = false;
+  bool no_bijectivity = false;            // bijective(false): no scaffold, charts may overlap
+  bool has_distortion_bound = false;
+  double distortion_bound = default_distortion_bound;
+  bool has_seam_weight = false;
+  double seam_weight = 0;
+  bool has_max_iterations = false;
+  std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
+  bool has_recut_rounds = false;
+  std::size_t recut_rounds = default_recut_rounds; // bound mode only
+  bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
+  bool pack = false;                      // charts packed into [0,1]^2 (SMSO::pack_charts)
+  double texture_size = default_texture_size; // --pack, --normalize with several charts: texels
+  double margin = default_margin;         // texels between charts and to the border
+  bool has_packing_option = false;        // --texture-size or --margin given
+  bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
+  double time_limit = 0;                  // seconds; 0: none
+  Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  std::size_t threads = 0;                // 0: TBB's default (all cores)
+  bool repair = false;                    // repair the input instead of refusing it
+  std::string svg;                        // empty: no UV layout picture
+  std::string png;                        // empty: no rendering
+
+  Mode mode() const
+  {
+    return keep_seams ? Mode::KEEP_SEAMS : has_seam_weight ? Mode::SEAM_WEIGHT : Mode::DISTORTION_BOUND;
+  }
+  std::size_t iteration_cap() const
+  {
+    return has_max_iterations ? max_iterations
+                              : keep_seams ? default_max_iterations_keep : default_max_iterations_seams;
+  }
+};
+
+enum class Parse_status { RUN, HELP, ERROR };
+
+inline void print_help(std::ostream& os)
+{
+  os << "Usage: " << program_name << " INPUT [options]\n"
+     << "\n"
+     << "Cuts a triangle mesh open along short seams and computes its UV map (texture\n"
+     << "coordinates) so that the symmetric Dirichlet distortion E_SD stays below a bound\n"
+     << "(OptCuts; 4 is an isometry), and writes it as an OBJ with per-corner texture\n"
+     << "coordinates. Progress goes to stderr (one updating line on a terminal).\n"
+     << "\n"
+     << "  INPUT                   triangle mesh: .obj, .off or .ply. Polygons with more than\n"
+     << "                          three corners are triangulated (a note says so); a\n"
+     << "                          non-manifold mesh or a zero-area triangle (twice its area\n"
+     << "                          below 1e-12 times its longest edge squared) is an error\n"
+     << "                          (see --repair). Faces are numbered from 1 in messages.\n"
+     << "                          Any genus, holes and several connected components: each\n"
+     << "                          component is first cut to disks (through its handles; its\n"
+     << "                          holes stay holes) and the charts are laid side by side.\n"
+     << "\n"
+     << "Options:\n"
+     << "  -o, --output OUT.obj    output OBJ, must end in .obj (default: INPUT's name\n"
+     << "                          without extension + \"_uv.obj\", in the current directory)\n"
+     << "  --repair                repair the input first (CGAL Polygon_mesh_processing):\n"
+     << "                          merge duplicate points, drop repeated corners, faces with\n"
+     << "                          fewer than 3 corners, duplicate faces and unused points,\n"
+     << "                          orient the faces (duplicating points at non-manifold edges\n"
+     << "                          and vertices), collapse or flip away zero-area triangles;\n"
+     << "                          what changed is\n"
+     << "                          one stderr line and \"repair\" in the report (default: off)\n"
+     << "  --use-input-uv          start from the input's own UV map (an OBJ with a vt for\n"
+     << "                          every face corner, no flipped triangle) instead of\n"
+     << "                          computing one; its seams are those of the map\n"
+     << "                          (default: off)\n"
+     << "  --normalize             write the UVs scaled uniformly (one factor for all charts)\n"
+     << "                          and packed as with --pack when there are several charts;\n"
+     << "                          one chart is scaled\n"
+     << "                          and translated into [0,1]^2; the report's e_sd is that of\n"
+     << "                          the unnormalized map (default: off)\n"
+     << "  --pack                  lay all charts out in [0,1]^2 without overlap, each moved\n"
+     << "                          rigidly (rotated to its smallest bounding rectangle) and\n"
+     << "                          all scaled by one factor, as large as fits in a square\n"
+     << "                          texture of --texture-size texels with --margin texels\n"
+     << "                          around each chart; the report gives the fill rate\n"
+     << "                          (default: off)\n"
+     << "  --texture-size N        texture side in texels for --pack, an integer >= 1\n"
+     << "                          (default: " << default_texture_size << ")\n"
+     << "  --margin M              texels between charts and to the border for --pack,\n"
+     << "                          >= 0 and < N / 2 (default: " << default_margin << ")\n"
+     << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
+     << "                          as found while E_SD <= B (default: " << default_distortion_bound
+     << ")\n"
+     << "  --seam-weight L         a fixed seam weight lambda in [0, 1) instead of the bound:\n"
+     << "                          minimize (1 - L) E_SD + L E_seam, no bound (default: off;\n"
+     << "                          not with --distortion-bound)\n"
+     << "  --no-bijectivity        do not keep charts from overlapping each other or\n"
+     << "                          themselves in UV space (no scaffold): faster, and seams\n"
+     << "                          may be shorter, but the map may not be usable as a\n"
+     << "                          texture; the report says whether it overlaps (default:\n"
+     << "                          off: the result is globally bijective)\n"
+     << "  --keep-seams            keep the input's seams (none for a disk; a closed genus-0\n"
+     << "                          mesh is cut by a two-edge slit) and only minimize\n"
+     << "                          distortion: the previous distortion-only mode (default: off)\n"
+     << "  --energy NAME           distortion energy the descent minimizes: symmetric_dirichlet,\n"
+     << "                          arap or mips; the bound always applies to E_SD, which the\n"
+     << "                          report gives in all cases (default: symmetric_dirichlet)\n"
+     << "  --max-iterations N      cap on Newton iterations (default: "
+     << default_max_iterations_seams << ", or " << default_max_iterations_keep
+     << " with --keep-seams)\n"
+     << "  --recut-rounds N        after the first result at the bound, at most N rounds of\n"
+     << "                          unzipping a tenth of the seams and cutting again (and N\n"
+     << "                          of straightening a winding seam path), while that finds\n"
+     << "                          shorter seams; 0 for the first result alone (faster);\n"
+     << "                          not with --seam-weight or --keep-seams\n"
+     << "                          (default: " << default_recut_rounds << ")\n"
+     << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
+     << "                          write the best result so far (status WARNING_TIME_LIMIT,\n"
+     << "                          exit 0); also with --keep-seams (default: none)\n"
+     << "  --threads N             use at most N threads (N >= 1; the result does not depend\n"
+     << "                          on it)"
+#ifdef CGAL_LINKED_WITH_TBB
+     << " (default: all cores)\n"
+#else
+     << "; built without TBB: always one thread (default: 1)\n"
+#endif
+     << "  --svg OUT.svg           draw the UV layout: triangles colored by their distortion,\n"
+     << "                          seams, legend and figures (default: none)\n"
+     << "  --png OUT.png           render the 3D model with a checkerboard through the UV map\n"
+     << "                          and the seams drawn on it, 600x600"
+     << (png_supported() ? "" : "; NOT AVAILABLE: built without libpng") << " (default: none)\n"
+     << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
+     << "                          e_sd_optimal_scale, initial_e_sd, distortion_bound,\n"
+     << "                          bound_met, seam_weight,\n"
+     << "                          lambda, seam_length, seam_length_normalized, charts,\n"
+     << "                          normalized, packed, texture_size, margin, fill_rate,\n"
+     << "                          iterations, topology_operations, bijective,\n"
+     << "                          overlapping_triangle_pairs, scaffold_rebuilds, energy,\n"
+     << "                          threads, repair, notes, seconds, faces, vertices, input,\n"
+     << "                          output, svg, png (default: no report)\n"
+     << "  --quiet                 no progress, summary or notes on stderr; errors are still\n"
+     << "                          printed (default: off)\n"
+     << "  -h, --help              print this help and exit\n"
+     << "\n"
+     << "Exit status: 0 success (also when the iteration cap was reached or the bound could\n"
+     << "not be met: see the warning and the report), 1 invalid input or failed run,\n"
+     << "2 invalid options, or an output that cannot be written (checked before the run;\n"
+     << "outputs go to a temporary file renamed over the target: never half-written).\n";
+}
+
+// A whole-string finite number ("4.1", "1e-2"); false for anything else.
+inline bool parse_double(const std::string& s, double& value)
+{
+  if(s.empty() || std::isspace(static_cast<unsigned char>(s[0])))
+    return false;
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(s.c_str(), &end);
+  if(end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(x))
+    return false;
+  value = x;
+  return true;
+}
+
+inline bool parse_size(const std::string& s, std::size_t& value)
+{
+  if(s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 18)
+    return false;
+  value = static_cast<std::size_t>(std::stoull(s));
+  return true;
+}
+
+// An option's name as typed, for the messages: "-o", or "--name" without "=value".
+inline std::string typed_option_name(const std::string& arg)
+{
+  return arg.compare(0, 2, "--") == 0 ? arg.substr(0, arg.find('=')) : arg.substr(0, 2);
+}
+
+// The options Boost.Program_options recognizes: names only (no abbreviation),
+// "--name=value", "--name value" and "-o value"; "--" ends the options. The
+// values are checked below, in command-line order, with the messages of the
+// help (Program_options' typed values would give its own).
+inline Parse_status parse_options(int argc, char* argv[], Options& options, std::string& error)
+{
+  namespace po = boost::program_options;
+  po::options_description recognized;
+  recognized.add_options()("help,h", "")("output,o", po::value<std::string>(), "");
+  for(const char* name : {"repair", "keep-seams", "use-input-uv", "normalize", "pack", "quiet", "no-bijectivity"})
+    recognized.add_options()(name, "");
+  for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
+                          "distortion-bound", "seam-weight", "max-iterations", "recut-rounds"})
+    recognized.add_options()(name, po::value<std::string>(), "");
+  recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
+  po::positional_options_description positional;
+  positional.add(positional_name, -1);
+
+  po::parsed_options parsed(&recognized);
+  try
+  {
+    parsed = po::command_line_parser(argc, argv)
+               .options(recognized)
+               .positional(positional)
+               .style(po::command_line_style::default_style & ~po::command_line_style::allow_guessing)
+               .allow_unregistered() // reported below, in order, as "unknown option"
+               .run();
+  }
+  catch(const po::invalid_command_line_syntax& e)
+  {
+    // Program_options names the long form; an option missing its value is
+    // the last argument, named here as typed ("-o").
+    const std::string name = e.kind() == po::invalid_command_line_syntax::missing_parameter && argc > 1
+                               ? typed_option_name(argv[argc - 1]) : e.get_option_name();
+    switch(e.kind())
+    {
+      case po::invalid_command_line_syntax::missing_parameter: error = "option '" + name + "' needs a value"; break;
+      case po::invalid_command_line_syntax::empty_adjacent_parameter:
+        error = "option '" + name + "' needs a non-empty value"; break;
+      case po::invalid_command_line_syntax::extra_parameter: error = "option '" + name + "' takes no value"; break;
+      default: error = e.what();
+    }
+    return Parse_status::ERROR;
+  }
+  catch(const po::error& e)
+  {
+    error = e.what();
+    return Parse_status::ERROR;
+  }
+
+  for(const po::option& o : parsed.options)
+  {
+    if(o.position_key >= 0)
+    {
+      const std::string& arg = o.value.front();
+      if(!options.input.empty())
+      {
+        error = "unexpected argument '" + arg + "' (only one INPUT)";
+        return Parse_status::ERROR;
+      }
+      options.input = arg;
+      continue;
+    }
+    const std::string& arg = o.original_tokens.front();
+    if(o.unregistered || o.string_key == positional_name)
+    {
+      error = "unknown option '" + arg + "'";
+      return Parse_status::ERROR;
+    }
+    const std::string key = "--" + o.string_key; // "--output" for -o too
+    const std::string name = typed_option_name(arg);
+    auto take_value = [&](std::string& out) {
+      out = o.value.empty() ? std::string() : o.value.front();
+      if(out.empty())
+      {
+        error = "option '" + name + "' needs a non-empty value";
+        return false;
+      }
+      return true;
+    };
+
+    // Switches, and options whose value is a file name.
+    const std::pair<const char*, bool*> switches[] = {
+      {"--repair", &options.repair}, {"--keep-seams", &options.keep_seams},
+      {"--use-input-uv", &options.use_input_uv}, {"--normalize", &options.normalize}, {"--pack", &options.pack},
+      {"--quiet", &options.quiet}, {"--no-bijectivity", &options.no_bijectivity}};
+    const std::pair<const char*, std::string*> paths[] = {
+      {"--output", &options.output}, {"--report", &options.report},
+      {"--svg", &options.svg}, {"--png", &options.png}};
+    bool* switch_option = nullptr;
+    std::string* path_option = nullptr;
+    for(const auto& o : switches) if(key == o.first) switch_option = o.second;
+    for(const auto& o : paths) if(key == o.first) path_option = o.second;
+
+    if(switch_option)
+    {
+      *switch_option = true;
+    }
+    else if(path_option)
+    {
+      if(!take_value(*path_option))
+        return Parse_status::ERROR;
+      if(path_option == &options.png && !png_supported())
+      {
+        error = "option '--png' is not available: optimize_seams was built without libpng";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(key == "--help")
+      return Parse_status::HELP;
+    else if(key == "--energy")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_energy(s, options.energy))
+      {
+        error = "option '--energy' needs symmetric_dirichlet, arap or mips, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(key == "--threads")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.threads) || options.threads < 1 || options.threads > 4096)
+      {
+        error = "option '--threads' needs an integer from 1 to 4096, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(key == "--time-limit")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.time_limit) || !(options.time_limit > 0.))
+      {
+        error = "option '--time-limit' needs a number of seconds > 0, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
+    else if(key == "--texture-size" || key == "--margin")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      std::size_t n = 0;
+      const bool size = key == "--texture-size";
+      if(size ? !parse_size(s, n) || n < 1 || n > 65536
+              : !parse_double(s, options.margin) || !(options.margin >= 0.))
+      {
+        error = size ? "option '--texture-size' needs an integer from 1 to 65536, not '" + s + "'"
+                     : "option '--margin' needs a number of texels >= 0, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      if(size)
+        options.texture_size = double(n);
+      options.has_packing_option = true;
+    }
+    else if(key == "--distortion-bound")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.distortion_bound) || !(options.distortion_bound > 4.))
+      {
+        error = "option '--distortion-bound' needs a number > 4 (4 is an isometry), not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_distortion_bound = true;
+    }
+    else if(key == "--seam-weight")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_double(s, options.seam_weight) || !(options.seam_weight >= 0. && options.seam_weight < 1.))
+      {
+        error = "option '--seam-weight' needs a number in [0, 1), not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_seam_weight = true;
+    }
+    else if(key == "--max-iterations")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.max_iterations))
+      {
+        error = "option '--max-iterations' needs a non-negative integer, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_max_iterations = true;
+    }
+    else if(key == "--recut-rounds")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!parse_size(s, options.recut_rounds) || options.recut_rounds > 1000)
+      {
+        error = "option '--recut-rounds' needs an integer in [0, 1000], not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.has_recut_rounds = true;
+    }
+    else
+    {
+      error = "unknown option '" + arg + "'";
+      return Parse_status::ERROR;
+    }
+  }
+  if(options.has_distortion_bound && options.has_seam_weight)
+  {
+    error = "options '--distortion-bound' and '--seam-weight' are exclusive (a bound, or a fixed seam weight)";
+    return Parse_status::ERROR;
+  }
+  if(options.keep_seams && (options.has_distortion_bound || options.has_seam_weight))
+  {
+    error = std::string("option '--keep-seams' does not optimize seams: it takes no '") +
+            (options.has_distortion_bound ? "--distortion-bound" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.has_recut_rounds && (options.keep_seams || options.has_seam_weight))
+  {
+    error = std::string("option '--recut-rounds' applies to the distortion bound, not to '") +
+            (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.has_packing_option && !options.pack && !options.normalize)
+  {
+    error = "options '--texture-size' and '--margin' apply to '--pack' (or '--normalize')";
+    return Parse_status::ERROR;
+  }
+  if(!(2 * options.margin < options.texture_size))
+  {
+    error = "option '--margin' must be less than half of the texture size";
+    return Parse_status::ERROR;
+  }
+  if(options.use_input_uv && options.repair)
+  {
+    error = "options '--use-input-uv' and '--repair' are exclusive (a repair would not keep the input's UVs)";
+    return Parse_status::ERROR;
+  }
+  if(options.input.empty())
+  {
+    error = "missing INPUT";
+    return Parse_status::ERROR;
+  }
+  return Parse_status::RUN;
+}
+
+} // namespace optimize_seams_cli
+
+#endif // SMSO_CLI_COMMAND_LINE_H
