@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 
@@ -619,6 +620,65 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   before.restore(cm);
   BOOST_TEST(std::abs(cm.seam_length() - (9 + 2 * std::sqrt(2.))) < 1e-12);
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+}
+
+
+// A flat strip of 12 x 1 squares mapped onto 1.25 turns of an annulus: its
+// UV map is flip-free but its two ends overlap. The split must cut it in
+// two pieces that do not overlap themselves, each corner keeping its UV.
+BOOST_AUTO_TEST_CASE(a_chart_that_overlaps_itself_is_cut_between_the_overlapping_triangles)
+{
+  const int n = 12;
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int j = 0; j <= 1; ++j)
+    for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
+  for(int i = 0; i < n; ++i)
+  {
+    sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
+    sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
+  }
+  Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  const double pi = 3.14159265358979323846;
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    // x along the strip -> angle (1.25 turns), y across -> radius, inwards (ccw triangles)
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    const double a = 2.5 * pi * p[0] / n, r = 3 - p[1];
+    cm.uv[2*u] = r * std::cos(a); cm.uv[2*u+1] = r * std::sin(a);
+  }
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
+  BOOST_REQUIRE(SMSO::internal::count_overlapping_pairs(cm) > 0);
+  std::vector<double> before(2 * cm.corner_uv.size());
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    for(int d = 0; d < 2; ++d) before[2*c + d] = cm.uv[2 * cm.corner_uv[c] + d];
+
+  BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 1u);
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+  std::vector<int> chart;
+  BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
+  for(int k = 0; k < 2; ++k)
+  {
+    std::vector<int> tri;
+    for(std::size_t f = 0; f < chart.size(); ++f)
+      if(chart[f] == k) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
+    BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
+  }
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    for(int d = 0; d < 2; ++d) BOOST_TEST(cm.uv[2 * cm.corner_uv[c] + d] == before[2*c + d]);
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_TEST(cm.signed_uv_area2(f) > 0);
+  // one cut across the strip: the seam edges (each once) join the two long sides
+  double seam = 0;
+  for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+    if(cm.opposite[h] > int(h) && cm.is_seam(int(h))) seam += cm.edge_length(int(h));
+  BOOST_TEST(seam >= 0.5 - 1e-12);
+  BOOST_TEST(seam <= std::sqrt(1.25) + 1e-12);
+  // a second call finds nothing to split
+  BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
 }
 
 namespace {

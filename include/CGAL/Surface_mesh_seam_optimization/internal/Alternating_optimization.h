@@ -13,6 +13,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Alternation.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Detach_faces.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Overlap.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
 

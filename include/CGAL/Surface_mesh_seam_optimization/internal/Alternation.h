@@ -54,12 +54,12 @@ struct Alternating_settings
   bool fixed_lambda = false;
   double lambda = 0.999;            // initial (bound mode) or fixed value
   double kappa = 1.;                // dual step size on rho = (1 - lambda) / lambda
-  std::size_t max_iterations = 100000;
+  std::size_t max_iterations = default_number_of_iterations;
   double time_limit = std::numeric_limits<double>::infinity(); // seconds from construction
   // bound mode: after the first result, unzip this fraction of the seams
   // where they buy least and alternate again, until a round finds nothing
   // shorter
-  int recut_rounds = 6;
+  int recut_rounds = default_number_of_recut_rounds;
   double recut_fraction = 0.1;
   // and straighten a leaf seam path whose shortcut is this much cheaper and
   // saves at least this fraction of the seams
@@ -193,7 +193,15 @@ protected:
   // Bijectivity_guard). False (status set) if the run must end.
   bool check_overlaps(Error_code& status)
   {
-    const Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda);
+    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda);
+    while(verdict == Bijectivity_guard::SPLIT)
+    {
+      m_tips.clear();
+      if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
+      status = descend();
+      if(status != OK) return false;
+      verdict = m_guard.check(m_cm, m_lambda);
+    }
     if(verdict == Bijectivity_guard::NO_OVERLAP) return true;
     if(verdict == Bijectivity_guard::RESTARTED)
     {

@@ -15,6 +15,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Overlap.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold_mesher.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
 
 #include <utility>
 
@@ -29,6 +31,7 @@ public:
   enum Verdict
   {
     NO_OVERLAP,   // kept as the safe configuration (charts perhaps laid apart)
+    SPLIT,        // charts that overlapped themselves were cut in two: descend again, still free
     RESTORED,     // overlap: back to the last safe configuration, scaffold on
     RESTARTED     // overlap: back to the initial map, scaffold on
   };
@@ -50,6 +53,7 @@ public:
     if(!build(cm)) return false;
     m_scaffold.clear();
     keep_as_safe(cm, lambda);
+    m_safe_is_initial = true;
     // The input's own disks keep about their initial layout; charts that
     // were cut free settle where the scaffold later cramps them: at the
     // first overlap, start over from the initial map (as the reference
@@ -92,6 +96,14 @@ public:
       keep_as_safe(cm, lambda);
       return NO_OVERLAP;
     }
+    // Back to the initial map (no stationary point was free of overlaps
+    // yet), the scaffolded descent would have to redo all of the free one:
+    // cut the charts that overlap themselves instead.
+    if(m_safe_is_initial && !m_restart_at_overlap && split_self_overlapping_charts(cm) > 0)
+    {
+      lay_out_uv_components(cm);
+      return SPLIT;
+    }
     Verdict verdict = RESTORED;
     if(m_restart_at_overlap)
     {
@@ -129,6 +141,7 @@ private:
   {
     m_safe.save(cm);
     m_safe_lambda = lambda;
+    m_safe_is_initial = false;
   }
 
   bool m_bijective;
@@ -138,6 +151,7 @@ private:
   Uv_snapshot m_safe;
   Uv_snapshot m_initial;
   bool m_restart_at_overlap = false;
+  bool m_safe_is_initial = false;
 };
 
 } // namespace internal

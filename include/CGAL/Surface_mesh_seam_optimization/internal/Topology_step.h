@@ -10,6 +10,7 @@
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Local_stencil.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Overlap.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Uv_topology.h>
 
