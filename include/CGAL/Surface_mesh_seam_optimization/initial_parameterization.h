@@ -792,6 +792,10 @@ Error_code initial_parameterization(const TriangleMesh& tm,
           extra[c] = extra[copp[c]] = 1;
   };
 
+  // Each round splits the first chart that failed, into more regions the
+  // more rounds have failed (up to 64); a surface with many small handles
+  // (CGAL's cheese: genus 133) has many such charts, so the rounds go on
+  // while they cut something new.
   std::vector<char> extra(nc, 0);
   std::vector<int> failed;
   for(int round = 0; ; ++round)
@@ -799,8 +803,10 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     failed.clear();
     const Error_code ec = solve(extra, failed);
     if(ec == OK) message.clear(); // (the charts that had to be split said why)
-    if(ec != ERROR_INITIAL_PARAMETERIZATION || failed.empty() || round == 6) return ec;
-    split(failed, 2 << round, extra);
+    if(ec != ERROR_INITIAL_PARAMETERIZATION || failed.empty()) return ec;
+    const std::ptrdiff_t cuts = std::count(extra.begin(), extra.end(), char(1));
+    split(failed, 2 << (std::min)(round, 5), extra);
+    if(round >= 5 && std::count(extra.begin(), extra.end(), char(1)) == cuts) return ec;
   }
 }
 
