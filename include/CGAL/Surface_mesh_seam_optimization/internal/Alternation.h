@@ -103,7 +103,7 @@ public:
     {
       // the scaffold waits until it is needed (see check_overlaps())
       Phase_timer timer(m_timings.scaffold);
-      if(!m_guard.begin(m_cm, m_lambda)) return ERROR_OVERLAPPING_UV_MAP;
+      if(!m_guard.begin(m_cm, m_lambda, chart_distortion())) return ERROR_OVERLAPPING_UV_MAP;
     }
     if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
     return descend();
@@ -193,14 +193,14 @@ protected:
   // Bijectivity_guard). False (status set) if the run must end.
   bool check_overlaps(Error_code& status)
   {
-    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda);
+    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda, chart_distortion());
     while(verdict == Bijectivity_guard::SPLIT)
     {
       m_tips.clear();
       if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
       status = descend();
       if(status != OK) return false;
-      verdict = m_guard.check(m_cm, m_lambda);
+      verdict = m_guard.check(m_cm, m_lambda, chart_distortion());
     }
     if(verdict == Bijectivity_guard::NO_OVERLAP) return true;
     if(verdict == Bijectivity_guard::RESTARTED)
@@ -220,6 +220,9 @@ protected:
   }
 
   bool scaffold_on() const { return m_guard.scaffold_on(); }
+
+  // E_SD of the charts as they are (the guard compares configurations)
+  double chart_distortion() const { return total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data()); }
 
   // Newton to a stationary point; between iterations, the seams created by
   // the last split are extended from their tips while that beats Newton.
