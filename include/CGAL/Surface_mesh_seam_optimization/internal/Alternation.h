@@ -193,14 +193,14 @@ protected:
   // Bijectivity_guard). False (status set) if the run must end.
   bool check_overlaps(Error_code& status)
   {
-    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda, chart_distortion());
+    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda, [this] { return chart_distortion(); });
     while(verdict == Bijectivity_guard::SPLIT)
     {
       m_tips.clear();
       if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
       status = descend();
       if(status != OK) return false;
-      verdict = m_guard.check(m_cm, m_lambda, chart_distortion());
+      verdict = m_guard.check(m_cm, m_lambda, [this] { return chart_distortion(); });
     }
     if(verdict == Bijectivity_guard::NO_OVERLAP) return true;
     if(verdict == Bijectivity_guard::RESTARTED)

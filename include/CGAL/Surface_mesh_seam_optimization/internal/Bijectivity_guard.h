@@ -84,10 +84,12 @@ public:
     return m_scaffold.max_density_growth(x) > m_scaffold.settings.rebuild_threshold;
   }
 
-  // At a stationary point with lambda `lambda` and E_SD `e_sd`: see Verdict.
-  // On RESTORED, `lambda` becomes the safe configuration's. The caller then
-  // builds the scaffold (see scaffold_failed()).
-  Verdict check(Cut_mesh& cm, double& lambda, double e_sd)
+  // At a stationary point with lambda `lambda`: see Verdict. `e_sd()` gives
+  // the charts' E_SD (asked only when a split is considered). On RESTORED,
+  // `lambda` becomes the safe configuration's. The caller then builds the
+  // scaffold (see scaffold_failed()).
+  template <typename Distortion>
+  Verdict check(Cut_mesh& cm, double& lambda, const Distortion& e_sd)
   {
     if(!m_lazy) return NO_OVERLAP;
     if(count_overlapping_pairs(cm, 1) == 0) { keep_as_safe(cm, lambda); return NO_OVERLAP; }
@@ -106,7 +108,7 @@ public:
     // stationary, going back costs little and the seams are shorter:
     // couplingdown 12.0 against 23.1, elephant-with-holes 13.2 against 19.3,
     // whose initial maps are 90 and 245 times their stationary E_SD.)
-    if(m_safe_is_initial && !m_restart_at_overlap && m_initial_e_sd > far_from_stationary * e_sd &&
+    if(m_safe_is_initial && !m_restart_at_overlap && m_initial_e_sd > far_from_stationary * e_sd() &&
        split_self_overlapping_charts(cm) > 0)
     {
       lay_out_uv_components(cm);
