@@ -245,6 +245,9 @@ inline bool parse_size(const std::string& s, std::size_t& value)
   return true;
 }
 
+inline bool parse_number(const std::string& s, double& value) { return parse_double(s, value); }
+inline bool parse_number(const std::string& s, std::size_t& value) { return parse_size(s, value); }
+
 // An option's name as typed, for the messages: "-o", or "--name" without "=value".
 inline std::string typed_option_name(const std::string& arg)
 {
@@ -329,6 +332,26 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
         error = "option '" + name + "' needs a non-empty value";
         return false;
       }
+      // "--report --quiet": the next option is no value (a file of that name
+      // is still "--report=--quiet")
+      if(o.original_tokens.size() > 1 && out.size() > 1 && out[0] == '-' && !std::isdigit(static_cast<unsigned char>(out[1])) && out[1] != '.')
+      {
+        error = "option '" + name + "' needs a value, not the option '" + out + "'";
+        return false;
+      }
+      return true;
+    };
+    // A number option: its value parsed, in range, and the flag that says it was given.
+    auto number = [&](auto& value, auto in_range, const std::string& needs, bool* given = nullptr) {
+      std::string s;
+      if(!take_value(s))
+        return false;
+      if(!parse_number(s, value) || !in_range(value))
+      {
+        error = "option '" + key + "' needs " + needs + ", not '" + s + "'";
+        return false;
+      }
+      if(given) *given = true;
       return true;
     };
 
@@ -374,91 +397,50 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     }
     else if(key == "--threads")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.threads, [](std::size_t n) { return n >= 1 && n <= 4096; }, "an integer from 1 to 4096"))
         return Parse_status::ERROR;
-      if(!parse_size(s, options.threads) || options.threads < 1 || options.threads > 4096)
-      {
-        error = "option '--threads' needs an integer from 1 to 4096, not '" + s + "'";
-        return Parse_status::ERROR;
-      }
     }
     else if(key == "--time-limit")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.time_limit, [](double t) { return t > 0.; }, "a number of seconds > 0"))
         return Parse_status::ERROR;
-      if(!parse_double(s, options.time_limit) || !(options.time_limit > 0.))
-      {
-        error = "option '--time-limit' needs a number of seconds > 0, not '" + s + "'";
-        return Parse_status::ERROR;
-      }
     }
-    else if(key == "--texture-size" || key == "--margin")
+    else if(key == "--texture-size")
     {
-      std::string s;
-      if(!take_value(s))
-        return Parse_status::ERROR;
       std::size_t n = 0;
-      const bool size = key == "--texture-size";
-      if(size ? !parse_size(s, n) || n < 1 || n > 65536
-              : !parse_double(s, options.margin) || !(options.margin >= 0.))
-      {
-        error = size ? "option '--texture-size' needs an integer from 1 to 65536, not '" + s + "'"
-                     : "option '--margin' needs a number of texels >= 0, not '" + s + "'";
+      if(!number(n, [](std::size_t t) { return t >= 1 && t <= 65536; }, "an integer from 1 to 65536",
+                 &options.has_packing_option))
         return Parse_status::ERROR;
-      }
-      if(size)
-        options.texture_size = double(n);
-      options.has_packing_option = true;
+      options.texture_size = double(n);
+    }
+    else if(key == "--margin")
+    {
+      if(!number(options.margin, [](double m) { return m >= 0.; }, "a number of texels >= 0", &options.has_packing_option))
+        return Parse_status::ERROR;
     }
     else if(key == "--distortion-bound")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.distortion_bound, [](double b) { return b > 4.; }, "a number > 4 (4 is an isometry)",
+                 &options.has_distortion_bound))
         return Parse_status::ERROR;
-      if(!parse_double(s, options.distortion_bound) || !(options.distortion_bound > 4.))
-      {
-        error = "option '--distortion-bound' needs a number > 4 (4 is an isometry), not '" + s + "'";
-        return Parse_status::ERROR;
-      }
-      options.has_distortion_bound = true;
     }
     else if(key == "--seam-weight")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.seam_weight, [](double w) { return w >= 0. && w < 1.; }, "a number in [0, 1)",
+                 &options.has_seam_weight))
         return Parse_status::ERROR;
-      if(!parse_double(s, options.seam_weight) || !(options.seam_weight >= 0. && options.seam_weight < 1.))
-      {
-        error = "option '--seam-weight' needs a number in [0, 1), not '" + s + "'";
-        return Parse_status::ERROR;
-      }
-      options.has_seam_weight = true;
     }
     else if(key == "--max-iterations")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.max_iterations, [](std::size_t) { return true; }, "a non-negative integer",
+                 &options.has_max_iterations))
         return Parse_status::ERROR;
-      if(!parse_size(s, options.max_iterations))
-      {
-        error = "option '--max-iterations' needs a non-negative integer, not '" + s + "'";
-        return Parse_status::ERROR;
-      }
-      options.has_max_iterations = true;
     }
     else if(key == "--recut-rounds")
     {
-      std::string s;
-      if(!take_value(s))
+      if(!number(options.recut_rounds, [](std::size_t n) { return n <= 1000; }, "an integer in [0, 1000]",
+                 &options.has_recut_rounds))
         return Parse_status::ERROR;
-      if(!parse_size(s, options.recut_rounds) || options.recut_rounds > 1000)
-      {
-        error = "option '--recut-rounds' needs an integer in [0, 1000], not '" + s + "'";
-        return Parse_status::ERROR;
-      }
-      options.has_recut_rounds = true;
     }
     else
     {

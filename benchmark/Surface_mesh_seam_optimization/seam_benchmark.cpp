@@ -124,7 +124,7 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
                                           const Settings& settings, Time_limit_visitor& visitor)
 {
   const auto common = SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
-                                       SMSO_np::maximum_number_of_iterations(settings.max_iterations),
+                                       SMSO_np::number_of_iterations(settings.max_iterations),
                                        SMSO_np::number_of_recut_rounds(settings.recut_rounds),
                                        SMSO_np::edge_is_seam_map(seams),
                                        SMSO_np::sparse_linear_solver(SolverTraits()));

@@ -114,6 +114,61 @@ Mesh read_mesh(const std::string& name)
 
 } // namespace
 
+// V - E + F of the charts of the flat grid, counted by hand: cuts add
+// boundary edges (one per side) and UV vertices (one per extra fan).
+BOOST_AUTO_TEST_CASE(euler_characteristic_of_cut_charts)
+{
+  using SMSO::internal::chart_euler_characteristics;
+  auto chi_of = [](const Cut_mesh& cm, std::vector<int>& chart, bool by_cut_flag, const std::vector<char>& cut) {
+    const std::size_t n = cm.compute_charts(chart);
+    return chart_euler_characteristics(chart, n, cm.corner_uv, cm.number_of_uv_vertices(), cm.opposite,
+                                       [&](int h) { return cm.opposite[h] < 0 || (by_cut_flag ? cut[h] != 0 : cm.is_seam(h)); });
+  };
+  std::vector<int> chart;
+  {
+    Grid_cut g; // a disk: 100 - 261 + 162 = 1
+    g.cut_along({});
+    const std::vector<char> none(g.cm.corner_vertex.size(), 0);
+    const std::vector<long> chi = chi_of(g.cm, chart, false, none);
+    BOOST_REQUIRE_EQUAL(chi.size(), 1u);
+    BOOST_TEST(chi[0] == 1);
+  }
+  {
+    Grid_cut g; // an interior slit of two edges: an annulus, 101 - 263 + 162 = 0
+    g.cut_along({{2, 4}, {3, 4}, {4, 4}});
+    const std::vector<char> none(g.cm.corner_vertex.size(), 0);
+    const std::vector<long> chi = chi_of(g.cm, chart, false, none);
+    BOOST_REQUIRE_EQUAL(chi.size(), 1u);
+    BOOST_TEST(chi[0] == 0);
+  }
+  {
+    // one interior edge flagged: no UV discontinuity (chi 1 by the seams), but
+    // two boundary sides by the flag (chi 0), as the initial map counts cuts
+    Grid_cut g;
+    g.cut_along({{2, 4}, {3, 4}});
+    std::vector<char> cut(g.cm.corner_vertex.size(), 0);
+    const int a = g.id(2, 4), b = g.id(3, 4);
+    for(std::size_t h = 0; h < cut.size(); ++h)
+    {
+      const int s = g.cm.corner_vertex[Cut_mesh::prev(int(h))], t = g.cm.corner_vertex[h];
+      cut[h] = (s == a && t == b) || (s == b && t == a);
+    }
+    BOOST_TEST(chi_of(g.cm, chart, false, cut)[0] == 1);
+    BOOST_TEST(chi_of(g.cm, chart, true, cut)[0] == 0);
+  }
+  {
+    Grid_cut g; // cut in two from border to border: two disks
+    std::vector<std::pair<int, int> > path;
+    for(int j = 0; j <= 9; ++j) path.emplace_back(4, j);
+    g.cut_along(path);
+    const std::vector<char> none(g.cm.corner_vertex.size(), 0);
+    const std::vector<long> chi = chi_of(g.cm, chart, false, none);
+    BOOST_REQUIRE_EQUAL(chi.size(), 2u);
+    BOOST_TEST(chi[0] == 1);
+    BOOST_TEST(chi[1] == 1);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(named_parameters_combine_in_any_order)
 {
   Surface_mesh sm;

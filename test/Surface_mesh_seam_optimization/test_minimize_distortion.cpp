@@ -114,7 +114,7 @@ BOOST_AUTO_TEST_CASE(restarting_from_the_result_changes_nothing_and_the_cap_is_h
 
   Surface_mesh sm2 = read_mesh<Surface_mesh>("bishop_part_f1000.obj");
   auto uv2 = sm2.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  const auto capped = SMSO::minimize_distortion(sm2, uv2, SMSO_np::maximum_number_of_iterations(std::size_t(2)));
+  const auto capped = SMSO::minimize_distortion(sm2, uv2, SMSO_np::number_of_iterations(std::size_t(2)));
   BOOST_TEST(capped.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
   BOOST_TEST(capped.has_result());
   BOOST_TEST(capped.iterations == 2u);

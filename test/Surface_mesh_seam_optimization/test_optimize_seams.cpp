@@ -190,7 +190,7 @@ BOOST_AUTO_TEST_CASE(recut_rounds_keep_the_bound_and_never_lengthen_the_seams)
   check_valid(recut);
   // a cap reached during the rounds ends them, not the run: OK, the best so far
   Run capped;
-  run("cat_f1500.obj", capped, SMSO_np::maximum_number_of_iterations(once.result.iterations + 5));
+  run("cat_f1500.obj", capped, SMSO_np::number_of_iterations(once.result.iterations + 5));
   BOOST_TEST(capped.result.status == SMSO::OK);
   BOOST_TEST(capped.result.distortion <= 4.1);
   BOOST_TEST(capped.result.seam_length <= once.result.seam_length);

@@ -409,7 +409,7 @@ BOOST_AUTO_TEST_CASE(a_chart_that_cannot_be_mapped_whole_is_split)
 
   auto uv2 = m.add_property_map<halfedge_descriptor, Point_2>("h:uv2").first;
   const SMSO::Optimization_result r =
-    SMSO::optimize_seams(m, uv2, SMSO_np::maximum_number_of_iterations(30));
+    SMSO::optimize_seams(m, uv2, SMSO_np::number_of_iterations(30));
   BOOST_TEST(r.status == SMSO::WARNING_MAXIMUM_ITERATIONS);
   BOOST_TEST(r.overlapping_triangle_pairs == 0u);
   std::size_t flipped = 0;

@@ -12,8 +12,10 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Chart_layout.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
@@ -136,121 +138,59 @@ inline double signed_area_2(const std::array<double, 2>& a,
   return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
 }
 
-// compute_initial_parameterization(), with a message saying which chart
-// failed and why on ERROR_INITIAL_PARAMETERIZATION and ERROR_NOT_A_DISK.
-template <class TriangleMesh, class EdgeSeamMap, class UVMap, class NamedParameters>
-Error_code initial_parameterization(const TriangleMesh& tm,
-                                    EdgeSeamMap seam_map,
-                                    UVMap uvmap,
-                                    const NamedParameters& np,
-                                    std::string& message)
+// The initial map of `cm`, the flat copy of `tm` made by copy_face_graph()
+// (which validated it): `seam` (per core halfedge, both sides) gains the
+// slits and the cuts through handles, `corner_uvs` receives the UV of every
+// corner (2 values each). A message says which chart failed and why on
+// ERROR_INITIAL_PARAMETERIZATION and ERROR_NOT_A_DISK; on any error `seam`
+// and `corner_uvs` are unchanged.
+template <class TriangleMesh, class VertexPointMap>
+Error_code initial_uv_map(const TriangleMesh& tm,
+                          VertexPointMap vpm,
+                          const Cut_mesh& cm,
+                          const Face_graph_copy<TriangleMesh>& copy,
+                          std::vector<char>& seam,
+                          std::vector<double>& corner_uvs,
+                          std::string& message)
 {
   namespace SMP = CGAL::Surface_mesh_parameterization;
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
 
   typedef boost::graph_traits<TriangleMesh>                           GT;
-  typedef typename GT::vertex_descriptor                              vertex_descriptor;
   typedef typename GT::halfedge_descriptor                            halfedge_descriptor;
   typedef typename GT::edge_descriptor                                edge_descriptor;
-  typedef typename GT::face_descriptor                                face_descriptor;
+  typedef VertexPointMap                                              VPM;
+  typedef std::array<double, 2>                                       UV;
+  typedef std::array<double, 3>                                       XYZ;
 
-  typedef typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type VPM;
-  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type           Geom_traits;
-  typedef typename Geom_traits::Point_2                                        Point_2;
-  typedef std::array<double, 2>                                                UV;
-  typedef std::array<double, 3>                                                XYZ;
-
-  const VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                   get_const_property_map(CGAL::vertex_point, tm));
-
-  // ---- flat copy: corner c = 3 * face + k is halfedge H[c], the UV of target(H[c]) in that face
-  const auto himap = get_initialized_halfedge_index_map(tm);
-  const auto vimap = get_initialized_vertex_index_map(tm);
-  std::size_t nh = 0, nv = 0;
-  for(halfedge_descriptor h : halfedges(tm)) nh = (std::max)(nh, std::size_t(get(himap, h)) + 1);
-  for(vertex_descriptor v : vertices(tm)) nv = (std::max)(nv, std::size_t(get(vimap, v)) + 1);
-
-  std::vector<halfedge_descriptor> H;
-  H.reserve(3 * num_faces(tm));
-  for(face_descriptor f : faces(tm))
-  {
-    const halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm), h2 = next(h1, tm);
-    if(next(h2, tm) != h0 || h1 == h0 || h2 == h0)
-    {
-      message = "face " + std::to_string(H.size() / 3) + " (numbered from 0) is not a triangle";
-      return ERROR_NON_TRIANGULAR_MESH;
-    }
-    H.push_back(h0); H.push_back(h1); H.push_back(h2);
-  }
-  const int nc = static_cast<int>(H.size());
+  // corner c = 3 * face + k is halfedge H[c], the UV of target(H[c]) in that face
+  const std::vector<halfedge_descriptor>& H = copy.corner_halfedge;
+  const std::vector<int>& cv = cm.corner_vertex;
+  const std::vector<int>& copp = cm.opposite;
+  const int nc = static_cast<int>(cv.size());
   const int nf = nc / 3;
-  if(nf == 0)
+  const std::size_t nv = cm.number_of_vertices();
+  struct Points
   {
-    message = "the mesh has no face";
-    return ERROR_EMPTY_MESH;
-  }
+    const double* p;
+    XYZ operator[](int v) const { return {{ p[3 * v], p[3 * v + 1], p[3 * v + 2] }}; }
+  } const P{ cm.points.data() };
 
-  std::vector<XYZ> P(nv);
-  for(vertex_descriptor v : vertices(tm))
-  {
-    const auto& p = get(vpm, v);
-    const XYZ q = {{ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) }};
-    if(!std::isfinite(q[0]) || !std::isfinite(q[1]) || !std::isfinite(q[2]))
-      return ERROR_NON_FINITE_COORDINATES;
-    P[get(vimap, v)] = q;
-  }
-
-  std::vector<int> corner_of(nh, -1), cv(nc), copp(nc);
+  const auto himap = get_initialized_halfedge_index_map(tm);
+  std::size_t nh = 0;
+  for(halfedge_descriptor h : halfedges(tm)) nh = (std::max)(nh, std::size_t(get(himap, h)) + 1);
+  std::vector<int> corner_of(nh, -1);
   for(int c = 0; c < nc; ++c)
     corner_of[get(himap, H[c])] = c;
   std::vector<char> base_cut(nc, 0); // the edge of H[c] separates charts (or is a border)
   for(int c = 0; c < nc; ++c)
-  {
-    cv[c] = static_cast<int>(get(vimap, target(H[c], tm)));
-    const halfedge_descriptor o = opposite(H[c], tm);
-    copp[c] = corner_of[get(himap, o)];
-    base_cut[c] = (copp[c] < 0 || get(seam_map, edge(H[c], tm))) ? 1 : 0;
-  }
+    base_cut[c] = (copp[c] < 0 || seam[c]) ? 1 : 0;
   auto next_c = [](int c) { return c - c % 3 + (c + 1) % 3; };
   auto prev_c = [](int c) { return c - c % 3 + (c + 2) % 3; };
 
-  // ---- 3D areas; degenerate triangles
   std::vector<double> area3(nf);
   for(int f = 0; f < nf; ++f)
-  {
-    const double* a = P[cv[3 * f]].data();
-    const double* b = P[cv[3 * f + 1]].data();
-    const double* c = P[cv[3 * f + 2]].data();
-    const internal::Triangle_area_test t = internal::test_triangle_area(a, b, c);
-    if(t.is_degenerate)
-    {
-      message = "face " + std::to_string(f) + " (numbered from 0) has a (numerically) zero area";
-      return ERROR_DEGENERATE_TRIANGLE;
-    }
-    area3[f] = 0.5 * t.twice_area;
-  }
-
-  // ---- manifold vertices: the corners at a vertex form one fan (ignoring seams)
-  {
-    internal::Union_find fans(nc);
-    for(int c = 0; c < nc; ++c)
-    {
-      const int o = copp[next_c(c)]; // corner at the same vertex across the edge of next(H[c])
-      if(o >= 0) fans.unite(c, o);
-    }
-    std::vector<int> fan_of(nv, -1);
-    for(int c = 0; c < nc; ++c)
-    {
-      const int r = fans.find(c);
-      if(fan_of[cv[c]] < 0) fan_of[cv[c]] = r;
-      else if(fan_of[cv[c]] != r)
-      {
-        message = "vertex " + std::to_string(cv[c]) + " (numbered from 0) is not manifold: its faces form several fans";
-        return ERROR_NON_MANIFOLD_MESH;
-      }
-    }
-  }
+    area3[f] = 0.5 * internal::twice_triangle_area(&cm.points[3 * cv[3 * f]], &cm.points[3 * cv[3 * f + 1]],
+                                                   &cm.points[3 * cv[3 * f + 2]]);
 
   auto side_length = [&](int c) -> double
   {
@@ -287,21 +227,11 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     for(int f = nf - 1; f >= 0; --f) first_face[chart_of_face[f]] = f;
 
     // Euler characteristic V - E + F of each chart's cut surface, and its boundary loops.
-    std::vector<long> chi(n_charts, 0), border_sides(n_charts, 0);
+    std::vector<int> uv_class(nc); // the UV vertex of each corner, named by a corner
+    for(int c = 0; c < nc; ++c) uv_class[c] = uv_uf.find(c);
+    const std::vector<long> chi = internal::chart_euler_characteristics(
+      chart_of_face, n_charts, uv_class, nc, copp, [&](int c) { return cut[c] != 0; });
     std::vector<int> loops(n_charts, 0);
-    for(int f = 0; f < nf; ++f) chi[chart_of_face[f]] += 1;
-    for(int c = 0; c < nc; ++c)
-    {
-      if(uv_uf.find(c) == c) chi[chart_of_face[c / 3]] += 1;
-      if(cut[c]) border_sides[chart_of_face[c / 3]] += 1;
-    }
-    {
-      // E: every face has 3 sides, an uncut edge two of them, a cut side is an edge alone.
-      std::vector<long> faces_in(n_charts, 0);
-      for(int f = 0; f < nf; ++f) faces_in[chart_of_face[f]] += 1;
-      for(int k = 0; k < n_charts; ++k)
-        chi[k] -= (3 * faces_in[k] + border_sides[k]) / 2;
-    }
     std::vector<std::vector<int> > loop_sides;  // every boundary loop, sides in walk order
     std::vector<int> loop_chart;
     {
@@ -632,11 +562,9 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     };
 
     // ---- charts with handles or several boundary loops: cut graph, filled-hole Tutte
-    std::vector<edge_descriptor> slit_edges;
+    std::vector<int> slit_sides_all; // a corner side of every slit and cut edge
     std::vector<char> pending(n_charts, 1);
     {
-      std::vector<int> uv_class(nc);
-      for(int c = 0; c < nc; ++c) uv_class[c] = uv_uf.find(c);
       std::vector<char> handle_slit(nc, 0);
       for(int k = 0; k < n_charts; ++k)
       {
@@ -679,7 +607,7 @@ Error_code initial_parameterization(const TriangleMesh& tm,
           return fail_chart(k, ": its Tutte and mean value maps, cut to a disk through " +
                                std::to_string(real_sides.size()) + " edges, have flipped, degenerate or coincident triangles");
         }
-        for(int s : real_sides) slit_edges.push_back(edge(H[s], tm));
+        for(int s : real_sides) slit_sides_all.push_back(s);
       }
     }
 
@@ -723,22 +651,23 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     }
     for(int k = 0; k < n_charts; ++k)
       for(int s : slit_sides[k])
-        slit_edges.push_back(edge(H[s], tm));
+        slit_sides_all.push_back(s);
     for(int c = 0; c < nc; ++c)
-      if(extra[c] && c < copp[c]) slit_edges.push_back(edge(H[c], tm));
+      if(extra[c] && c < copp[c]) slit_sides_all.push_back(c);
 
     // Grid of charts in face order.
     const std::vector<UV> corner = internal::grid_layout(lo, hi);
 
     // ---- write (nothing was written before this point)
+    corner_uvs.resize(2 * std::size_t(nc));
     for(int c = 0; c < nc; ++c)
     {
       const int k = chart_of_face[c / 3];
-      put(uvmap, H[c], Point_2(uv[c][0] - lo[k][0] + corner[k][0],
-                               uv[c][1] - lo[k][1] + corner[k][1]));
+      corner_uvs[2 * c] = uv[c][0] - lo[k][0] + corner[k][0];
+      corner_uvs[2 * c + 1] = uv[c][1] - lo[k][1] + corner[k][1];
     }
-    for(edge_descriptor e : slit_edges)
-      put(seam_map, e, true);
+    for(int s : slit_sides_all)
+      if(copp[s] >= 0) seam[s] = seam[copp[s]] = 1;
     return OK;
   };
 
@@ -808,6 +737,37 @@ Error_code initial_parameterization(const TriangleMesh& tm,
     split(failed, 2 << (std::min)(round, 5), extra);
     if(round >= 5 && std::count(extra.begin(), extra.end(), char(1)) == cuts) return ec;
   }
+}
+
+// compute_initial_parameterization(), with a message saying what failed.
+template <class TriangleMesh, class EdgeSeamMap, class UVMap, class NamedParameters>
+Error_code initial_parameterization(const TriangleMesh& tm,
+                                    EdgeSeamMap seam_map,
+                                    UVMap uvmap,
+                                    const NamedParameters& np,
+                                    std::string& message)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename GetGeomTraits<TriangleMesh, NamedParameters>::type Geom_traits;
+  typedef typename Geom_traits::Point_2                              Point_2;
+
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  Cut_mesh cm;
+  Face_graph_copy<TriangleMesh> copy;
+  Error_code ec = copy_face_graph(tm, vpm, cm, copy, message);
+  if(ec != OK) return ec;
+  std::vector<char> seam;
+  read_seam_map(tm, seam_map, copy, cm, seam);
+  std::vector<double> corner_uvs;
+  ec = initial_uv_map(tm, vpm, cm, copy, seam, corner_uvs, message);
+  if(ec != OK) return ec;
+  for(std::size_t c = 0; c < copy.corner_halfedge.size(); ++c)
+    put(uvmap, copy.corner_halfedge[c], Point_2(corner_uvs[2 * c], corner_uvs[2 * c + 1]));
+  for(std::size_t h = 0; h < seam.size(); ++h)
+    if(seam[h] && cm.opposite[h] > int(h)) put(seam_map, edge(copy.corner_halfedge[h], tm), true);
+  return OK;
 }
 
 } // namespace internal

@@ -112,6 +112,27 @@ Uv_map_measures measure_uv_map(const TriangleMesh& tm, UVMap uvmap,
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// E_SD (or the energy of the `energy` named parameter) of a UV map; +inf if a triangle is flipped.
+///
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 double distortion(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())
@@ -121,6 +142,27 @@ double distortion(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// Seam length; normalized by sqrt(area / pi) if `normalized`.
+///
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 double seam_length(const TriangleMesh& tm, UVMap uvmap, bool normalized = false,
@@ -132,6 +174,27 @@ double seam_length(const TriangleMesh& tm, UVMap uvmap, bool normalized = false,
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// Number of UV triangles with non-positive signed area.
+///
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t number_of_flipped_triangles(const TriangleMesh& tm, UVMap uvmap,
@@ -143,6 +206,27 @@ std::size_t number_of_flipped_triangles(const TriangleMesh& tm, UVMap uvmap,
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// Number of pairs of UV triangles whose interiors overlap (see
 /// `Uv_map_measures::overlapping_triangle_pairs`), any two charts or within one.
+///
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t number_of_overlapping_triangle_pairs(const TriangleMesh& tm, UVMap uvmap,
@@ -155,6 +239,27 @@ std::size_t number_of_overlapping_triangle_pairs(const TriangleMesh& tm, UVMap u
 /// Whether a UV map is globally injective: valid, no flipped triangle and no
 /// overlapping pair of triangles. Use it, e.g., to validate an initial map
 /// before `optimize_seams()` with `use_uv_map_as_initial(true)`.
+///
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{the seams, instead of the edges whose two sides have different UVs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{the UV discontinuities}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{the distortion energy measured}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
 bool is_bijective(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np = parameters::default_values())

@@ -33,6 +33,10 @@ usage_error "recut-rounds" --recut-rounds -1
 usage_error "recut-rounds" --recut-rounds abc
 usage_error "keep-seams" --keep-seams --recut-rounds 2
 usage_error "seam-weight" --seam-weight 0.1 --recut-rounds 2
+# an option where a value should be is no value (a file name starting with
+# "--" is given as --svg=--name)
+usage_error "needs a value, not the option '--quiet'" --svg --quiet
+usage_error "needs a value, not the option '--keep-seams'" --seam-weight --keep-seams
 
 # --keep-seams: the distortion-only mode, no topology operation, no lambda, no bound.
 "$BIN" "$DATA/cat_f1500.obj" --keep-seams -o k.obj --report k.json >out.txt 2>err.txt

@@ -72,7 +72,16 @@ inline bool parse_obj_index(const std::string& s, std::size_t count, std::size_t
 /// orientation of `tm`. Coordinates are written with 17 significant digits.
 ///
 /// `uvmap`: `halfedge_descriptor -> Point_2`, `get(uvmap, h)` the UV of
-/// `target(h)` in `face(h)`. Named parameter: `vertex_point_map`.
+/// `target(h)` in `face(h)`.
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points written}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return `false` when the stream fails.
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
@@ -188,6 +197,15 @@ bool write_OBJ_with_uv_map(const std::string& fname, const TriangleMesh& tm, UVM
 /// of every face corner into `uvmap`. Every face corner must have a `vt`,
 /// and the faces must form a combinatorial manifold (as CGAL requires).
 /// Faces are added in file order and vertices in `v` order.
+/// \param np an optional sequence of named parameters among the ones listed below:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{where the points read are put}
+///     \cgalParamType{a model of `WritablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \return `false`, with the reason in `error`, on any problem; `tm` is then
 /// left in an unspecified state.
 template <typename TriangleMesh, typename UVMap,

@@ -138,6 +138,25 @@ struct Cut_mesh
   double normalization_radius() const { return std::sqrt(total_area / 3.14159265358979323846); }
 };
 
+// V - E + F of each chart of a cut surface. `chart`: the chart of each face
+// (ids below `n_charts`); `uv_of`: the UV vertex of each corner (ids below
+// `n_uv`); `border(h)`: the side of halfedge h bounds its chart, an edge of
+// its own (an interior edge is counted once from its two sides).
+template <class BorderSide>
+std::vector<long> chart_euler_characteristics(const std::vector<int>& chart, std::size_t n_charts,
+                                              const std::vector<int>& uv_of, std::size_t n_uv,
+                                              const std::vector<int>& opposite, BorderSide border)
+{
+  std::vector<long> chi(n_charts, 0);
+  for(int k : chart) ++chi[k];
+  std::vector<char> counted(n_uv, 0);
+  for(std::size_t c = 0; c < uv_of.size(); ++c)
+    if(!counted[uv_of[c]]) { counted[uv_of[c]] = 1; ++chi[chart[c / 3]]; }
+  for(std::size_t h = 0; h < opposite.size(); ++h)
+    if(border(int(h)) || opposite[h] > int(h)) --chi[chart[h / 3]];
+  return chi;
+}
+
 // A copy of the mutable part of a cut mesh (the UV mesh), to come back to.
 struct Uv_snapshot
 {

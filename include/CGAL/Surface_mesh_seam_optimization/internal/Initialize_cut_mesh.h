@@ -12,7 +12,6 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_maps.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Untangle.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -36,7 +35,6 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  typedef typename boost::property_traits<UVMap>::value_type Point_2;
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_const_property_map(CGAL::vertex_point, tm));
@@ -50,20 +48,11 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
   std::vector<char> seam;
   std::vector<double> corner_uvs;
 
-  // the default initial map, cut along `scratch_seams` (and more, if needed)
-  auto compute_default = [&](auto scratch_seams) -> Error_code {
-    auto scratch_uv = make_halfedge_vector_map<Point_2>(tm, Point_2(0, 0));
-    if constexpr(!parameters::is_default_parameter<NamedParameters, CGAL::internal_np::geom_traits_t>::value)
-      ec = initial_parameterization(
-        tm, scratch_seams, scratch_uv,
-        CGAL::parameters::vertex_point_map(vpm).geom_traits(get_parameter(np, CGAL::internal_np::geom_traits)),
-        message);
-    else
-      ec = initial_parameterization(tm, scratch_seams, scratch_uv, CGAL::parameters::vertex_point_map(vpm), message);
+  // the default initial map, cut along `seams` (per core halfedge) and more if needed
+  auto compute_default = [&](std::vector<char> seams) -> Error_code {
+    ec = initial_uv_map(tm, vpm, cm, copy, seams, corner_uvs, message);
     if(ec != OK) { message = "could not compute the initial map: " + message; return ec; }
-    read_seam_map(tm, scratch_seams, copy, cm, seam);
-    ec = read_uv_map(tm, scratch_uv, copy, corner_uvs, message);
-    if(ec != OK) return ec;
+    seam.swap(seams);
     label_uv_vertices(cm, seam);
     set_uvs_from_corners(cm, corner_uvs);
     return OK;
@@ -71,13 +60,11 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
 
   if(!use_input)
   {
-    auto scratch_seams = make_edge_vector_map<bool>(tm, false);
     if constexpr(has_seam_map)
-    {
-      auto user_seams = get_parameter(np, internal_np::edge_is_seam_map);
-      for(auto e : edges(tm)) put(scratch_seams, e, bool(get(user_seams, e)));
-    }
-    ec = compute_default(scratch_seams);
+      read_seam_map(tm, get_parameter(np, internal_np::edge_is_seam_map), copy, cm, seam);
+    else
+      seam.assign(cm.corner_vertex.size(), 0);
+    ec = compute_default(seam);
     if(ec != OK) return ec;
     for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
       if(!(cm.signed_uv_area2(f) > 0))
@@ -107,12 +94,9 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
     message = std::to_string(count) + " flipped or degenerate triangles of the initial UV map untangled";
     return OK;
   }
-  auto scratch_seams = make_edge_vector_map<bool>(tm, false);
-  for(std::size_t h = 0; h < seam.size(); ++h)
-    if(seam[h]) put(scratch_seams, edge(copy.corner_halfedge[h], tm), true);
   std::string default_message;
   std::swap(default_message, message);
-  if(compute_default(scratch_seams) != OK || count_invalid_uv_triangles(cm) > 0)
+  if(compute_default(seam) != OK || count_invalid_uv_triangles(cm) > 0)
   {
     message = which + " (and neither untangling it nor the default initial map with its seams worked)";
     return ERROR_FLIPPED_UV_TRIANGLE;

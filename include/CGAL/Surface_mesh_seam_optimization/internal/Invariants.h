@@ -52,21 +52,11 @@ inline std::string check_invariants(const Cut_mesh& cm)
 
   std::vector<int> chart;
   const std::size_t nc = cm.compute_charts(chart);
-  std::vector<long> chi(nc, 0);
-  std::vector<int> uv_chart(nuv, -1);
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c) uv_chart[cm.corner_uv[c]] = chart[c / 3];
-  for(std::size_t u = 0; u < nuv; ++u) ++chi[uv_chart[u]];
-  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) ++chi[chart[f]];
-  bool has_border_edge = false;
+  const std::vector<long> chi = chart_euler_characteristics(
+    chart, nc, cm.corner_uv, nuv, cm.opposite, [&](int h) { return cm.opposite[h] < 0 || cm.is_seam(h); });
   std::vector<char> open(nc, 0);
   for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
-  {
-    const int o = cm.opposite[h];
-    const bool border = o < 0 || cm.is_seam(int(h));
-    if(border) { open[chart[h / 3]] = 1; has_border_edge = true; }
-    if(border || o > int(h)) --chi[chart[h / 3]];
-  }
-  (void)has_border_edge;
+    if(cm.opposite[h] < 0 || cm.is_seam(int(h))) open[chart[h / 3]] = 1;
   for(std::size_t k = 0; k < nc; ++k)
     if(!open[k] || chi[k] > 1) return "chart " + std::to_string(k) + " is closed";
   return std::string();
