@@ -8,7 +8,7 @@ packages=(
   cmake g++ make
   libcgal-dev libeigen3-dev
   libboost-dev libboost-graph-dev libboost-test-dev libboost-program-options-dev
-  libsuitesparse-dev libtbb-dev libpng-dev
+  libsuitesparse-dev libopenblas0-serial libtbb-dev libpng-dev
   doxygen python3
 )
 

@@ -7,10 +7,11 @@
 # BUILD/scaling_meshes, not committed), in order of size, one process per run:
 # - distortion only: the initial map (circle boundary + Tutte), timed apart,
 #   then minimize_distortion() from it (seams fixed: none), with the default
-#   solver (Eigen SimplicialLDLT): to convergence up to CONVERGE_MAX_FACES
-#   faces, else 20 Newton iterations (the iteration count grows slowly with
-#   the size, the cost of an iteration is what scales); and, when built with
-#   CHOLMOD, 20 iterations with Cholmod_traits on every size;
+#   solver (Default_sparse_solver_traits: SimplicialLDLT, CHOLMOD supernodal
+#   from 40000 unknowns): to convergence up to CONVERGE_MAX_FACES faces, else
+#   20 Newton iterations (the iteration count grows slowly with the size, the
+#   cost of an iteration is what scales); and 20 iterations with
+#   Eigen_simplicial_ldlt_traits on every size, for comparison;
 # - seam optimization: optimize_seams() at the bound, cancelled by a visitor
 #   past TIME_LIMIT seconds; a size whose time, extrapolated from the sizes
 #   done, exceeds 1.5 TIME_LIMIT, or larger than a size that was cancelled,
@@ -43,8 +44,6 @@ for steps in 1 2; do
   fi
   series+=("$file")
 done
-has_cholmod=
-"$bin" --solver cholmod --help >/dev/null 2>&1 && has_cholmod=1
 
 work=$(mktemp -d "${TMPDIR:-/tmp}/smso_scaling.XXXXXX")
 raw=$work/raw.csv
@@ -101,7 +100,7 @@ for file in "${series[@]}"; do
   else
     run distortion "$file" --distortion-only --max-iterations "$capped_iterations"
   fi
-  [ -n "$has_cholmod" ] && run cholmod "$file" --distortion-only --solver cholmod --max-iterations "$capped_iterations"
+  run ldlt "$file" --distortion-only --solver ldlt --max-iterations "$capped_iterations"
   predicted=$(predict_seams "$faces")
   if [ -z "$skip_seams" ] && [ -n "$predicted" ] && [ "$predicted" -gt $((time_limit * 3 / 2)) ]; then
     skip_seams="predicted"
@@ -154,7 +153,7 @@ finished = lambda r: r["status"] in ("OK", "WARNING_BOUND_NOT_MET", "WARNING_MAX
 converged = lambda r: r["status"] == "OK"
 by_mode = {}
 for r in rows: by_mode.setdefault(r["mode"], {})[r["mesh"]] = r
-dist, chol, seam = by_mode.get("distortion", {}), by_mode.get("cholmod", {}), by_mode.get("seams", {})
+dist, chol, seam = by_mode.get("distortion", {}), by_mode.get("ldlt", {}), by_mode.get("seams", {})
 per_it = lambda r: num(r["seconds"]) / num(r["iterations"]) if num(r["iterations"]) and num(r["seconds"]) else None
 
 with open(prefix + ".csv", "w", newline="") as f:
@@ -170,14 +169,14 @@ def add_fit(label, rs, keep, key):
     return fr
 add_fit("initial map (circle + Tutte): seconds", dist, lambda r: num(r["initial_map_seconds"]) is not None,
         lambda r: num(r["initial_map_seconds"]))
-add_fit("minimize_distortion(), SimplicialLDLT: seconds per Newton iteration", dist, finished, per_it)
-add_fit("minimize_distortion(), SimplicialLDLT: seconds to convergence", dist, converged, lambda r: num(r["seconds"]))
-add_fit("minimize_distortion(), SimplicialLDLT: Newton iterations to convergence", dist, converged,
+add_fit("minimize_distortion(), default solver: seconds per Newton iteration", dist, finished, per_it)
+add_fit("minimize_distortion(), default solver: seconds to convergence", dist, converged, lambda r: num(r["seconds"]))
+add_fit("minimize_distortion(): Newton iterations to convergence", dist, converged,
         lambda r: num(r["iterations"]))
-add_fit("minimize_distortion(), SimplicialLDLT: peak MB", dist, finished, lambda r: num(r["peak_mb"]))
+add_fit("minimize_distortion(), default solver: peak MB", dist, finished, lambda r: num(r["peak_mb"]))
 if chol:
-    add_fit("minimize_distortion(), CHOLMOD: seconds per Newton iteration", chol, finished, per_it)
-    add_fit("minimize_distortion(), CHOLMOD: peak MB", chol, finished, lambda r: num(r["peak_mb"]))
+    add_fit("minimize_distortion(), SimplicialLDLT: seconds per Newton iteration", chol, finished, per_it)
+    add_fit("minimize_distortion(), SimplicialLDLT: peak MB", chol, finished, lambda r: num(r["peak_mb"]))
 seam_fit = add_fit("optimize_seams(): seconds", seam, finished, lambda r: num(r["seconds"]))
 add_fit("optimize_seams(): Newton iterations", seam, finished, lambda r: num(r["iterations"]))
 add_fit("optimize_seams(): peak MB", seam, finished, lambda r: num(r["peak_mb"]))
@@ -192,10 +191,10 @@ L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start {load_
 L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topological disk), and lucy_o_f24136 "
          "after 1 and 2 steps of Loop subdivision (CGAL::Subdivision_method_3, made by `subdivide_mesh`)")
 L.append(f"- distortion only: the initial map (circle boundary + Tutte through Surface_mesh_parameterization; "
-         f"\"init s\"), then `minimize_distortion()` from it, seams fixed (none), default solver (Eigen "
-         f"SimplicialLDLT): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
+         f"\"init s\"), then `minimize_distortion()` from it, seams fixed (none), default solver "
+         f"(`Default_sparse_solver_traits`: SimplicialLDLT, CHOLMOD supernodal from 40000 unknowns): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
          f"(\"capped\"; E_SD is then not the minimum); \"s\" excludes the initial map"
-         + (f"; CHOLMOD: the same with `Cholmod_traits`, {capped} iterations on every size" if chol else ""))
+         + (f"; SimplicialLDLT: the same with `Eigen_simplicial_ldlt_traits`, {capped} iterations on every size" if chol else ""))
 L.append(f"- seams: `optimize_seams()` at the bound {bound}, not bijective, cancelled by a visitor past {time_limit} s "
          f"(WARNING_CANCELLED); a size whose time extrapolated from the finished sizes exceeds 1.5 x {time_limit} s, "
          "or larger than a cancelled one, is not run (SKIPPED, with the extrapolated seconds)")
@@ -203,7 +202,7 @@ L.append("- MB: peak resident memory (ru_maxrss) of the process, one process per
          "E_SD checked by uvmetrics.py on the written OBJ (no overlap test)")
 L.append("")
 hdr = ["mesh", "faces", "init s", "dist. s", "dist. Newton it", "dist. s/it", "dist. E_SD", "dist. MB"]
-if chol: hdr += ["CHOLMOD s/it", "CHOLMOD MB"]
+if chol: hdr += ["SimplicialLDLT s/it", "SimplicialLDLT MB"]
 hdr += ["seams s", "seams Newton it", "topo ops", "seams E_SD", "E_se", "seams MB", "seams status"]
 L.append("| " + " | ".join(hdr) + " |")
 L.append("|" + "---|" * len(hdr))

@@ -19,11 +19,11 @@
 // initial map (compute_initial_parameterization()) is then timed apart:
 // seconds is the descent from it, initial_map_seconds the map itself.
 // --no-bijectivity: bijective(false) (no scaffold; charts may overlap).
-// --solver cholmod: Cholmod_traits instead of the default Eigen_simplicial_ldlt_traits
-// (when the package is built with CHOLMOD).
+// --solver ldlt|cholmod: Eigen_simplicial_ldlt_traits or Cholmod_traits (when the
+// package is built with CHOLMOD) instead of the default Default_sparse_solver_traits.
 //
 // Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--time-limit S]
-//                       [--distortion-only] [--no-bijectivity] [--solver ldlt|cholmod] [--no-header] mesh.obj ...
+//                       [--distortion-only] [--no-bijectivity] [--solver default|ldlt|cholmod] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -82,7 +82,7 @@ struct Settings
   double time_limit = 0; // seconds; 0: none
   bool distortion_only = false;
   bool bijective = true;
-  bool cholmod = false;
+  std::string solver = "default"; // default (Default_sparse_solver_traits), ldlt or cholmod
   std::string out_dir = ".";
 };
 
@@ -162,11 +162,14 @@ static Row run(const std::string& file, const Settings& settings)
   const auto start = std::chrono::steady_clock::now();
   Time_limit_visitor visitor(start, settings.time_limit > 0 ? settings.time_limit : 1e300);
 #ifdef CGAL_SMSO_HAS_CHOLMOD
-  const SMSO::Optimization_result r = settings.cholmod
+  const SMSO::Optimization_result r = settings.solver == "cholmod"
     ? optimize<SMSO::Cholmod_traits>(sm, uv, seams, settings, visitor)
-    : optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor);
+    : settings.solver == "ldlt" ? optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor)
+                                : optimize<SMSO::Default_sparse_solver_traits>(sm, uv, seams, settings, visitor);
 #else
-  const SMSO::Optimization_result r = optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor);
+  const SMSO::Optimization_result r = settings.solver == "ldlt"
+    ? optimize<SMSO::Eigen_simplicial_ldlt_traits>(sm, uv, seams, settings, visitor)
+    : optimize<SMSO::Default_sparse_solver_traits>(sm, uv, seams, settings, visitor);
 #endif
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.status = SMSO::get_error_code_name(r.status);
@@ -213,7 +216,8 @@ static int usage(const char* argv0)
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
                "  --no-bijectivity    no scaffold: charts may overlap\n"
-               "  --solver S          ldlt (Eigen SimplicialLDLT, the default) or cholmod (if built with it)\n"
+               "  --solver S          default (Default_sparse_solver_traits: SimplicialLDLT, CHOLMOD supernodal from 40000 unknowns),\n"
+               "                      ldlt (Eigen SimplicialLDLT) or cholmod (Cholmod_traits, if built with it)\n"
                "  --no-header         do not print the CSV header line\n";
   return EXIT_FAILURE;
 }
@@ -239,12 +243,11 @@ int main(int argc, char** argv)
     else if(a == "--no-bijectivity") settings.bijective = false;
     else if(a == "--solver" && i + 1 < argc)
     {
-      const std::string solver = argv[++i];
-      settings.cholmod = (solver == "cholmod");
+      settings.solver = argv[++i];
 #ifndef CGAL_SMSO_HAS_CHOLMOD
-      if(settings.cholmod) { std::cerr << "built without CHOLMOD\n"; return EXIT_FAILURE; }
+      if(settings.solver == "cholmod") { std::cerr << "built without CHOLMOD\n"; return EXIT_FAILURE; }
 #endif
-      if(!settings.cholmod && solver != "ldlt") return usage(argv[0]);
+      if(settings.solver != "cholmod" && settings.solver != "ldlt" && settings.solver != "default") return usage(argv[0]);
     }
     else if(a == "--no-header") header = false;
     else if(a == "-h" || a == "--help") { usage(argv[0]); return EXIT_SUCCESS; }

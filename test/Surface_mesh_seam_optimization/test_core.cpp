@@ -169,6 +169,68 @@ BOOST_AUTO_TEST_CASE(euler_characteristic_of_cut_charts)
   }
 }
 
+// The default solver: the simplicial LDL^T below its threshold, CHOLMOD's
+// supernodal Cholesky from it (with CHOLMOD), the same solutions; an
+// indefinite matrix, which Cholesky refuses, is solved by the LDL^T.
+BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  // Newton's system of a jittered grid's Tutte-like Laplacian, 2 unknowns per vertex
+  const int n = 30, N = n * n;
+  std::vector<Eigen::Triplet<double> > t;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> w(0.5, 2.);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const int v = i * n + j;
+      for(int d = 0; d < 2; ++d) t.emplace_back(2 * v + d, 2 * v + d, 1e-3);
+      const int nb[2] = { i + 1 < n ? v + n : -1, j + 1 < n ? v + 1 : -1 };
+      for(int u : nb)
+      {
+        if(u < 0) continue;
+        const double k = w(rng);
+        for(int d = 0; d < 2; ++d)
+        {
+          t.emplace_back(2 * v + d, 2 * v + d, k);
+          t.emplace_back(2 * u + d, 2 * u + d, k);
+          t.emplace_back((std::max)(2 * u + d, 2 * v + d), (std::min)(2 * u + d, 2 * v + d), -k);
+        }
+      }
+    }
+  Matrix A(2 * N, 2 * N);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(2 * N, -1., 1.), x_ldlt, x_default, x_small;
+  SMSO::Eigen_simplicial_ldlt_traits ldlt;
+  BOOST_REQUIRE(ldlt.analyze_pattern(A) && ldlt.factorize(A) && ldlt.solve(b, x_ldlt));
+
+  SMSO::Default_sparse_solver_traits small; // default threshold: far above 1800 unknowns
+  BOOST_REQUIRE(small.analyze_pattern(A) && small.factorize(A) && small.solve(b, x_small));
+  BOOST_TEST(!small.uses_cholmod());
+  BOOST_TEST((x_small - x_ldlt).norm() == 0.); // the very same factorization
+
+  SMSO::Default_sparse_solver_traits large(1000);
+  BOOST_REQUIRE(large.analyze_pattern(A) && large.factorize(A) && large.solve(b, x_default));
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+  BOOST_TEST(large.uses_cholmod());
+#else
+  BOOST_TEST(!large.uses_cholmod());
+#endif
+  BOOST_TEST((x_default - x_ldlt).norm() <= 1e-10 * x_ldlt.norm());
+  BOOST_TEST((A.selfadjointView<Eigen::Lower>() * x_default - b).norm() <= 1e-10 * b.norm());
+
+  // indefinite: diag(2, -1, 3) with a coupling; LDL^T solves it
+  Matrix M(3, 3);
+  M.insert(0, 0) = 2.; M.insert(1, 1) = -1.; M.insert(2, 2) = 3.; M.insert(2, 0) = 0.5;
+  M.makeCompressed();
+  Eigen::VectorXd c(3), y;
+  c << 1., 2., 3.;
+  SMSO::Default_sparse_solver_traits tiny(1);
+  BOOST_REQUIRE(tiny.analyze_pattern(M) && tiny.factorize(M) && tiny.solve(c, y));
+  BOOST_TEST(!tiny.uses_cholmod()); // fell back for this pattern
+  BOOST_TEST((M.selfadjointView<Eigen::Lower>() * y - c).norm() <= 1e-12);
+}
+
 BOOST_AUTO_TEST_CASE(named_parameters_combine_in_any_order)
 {
   Surface_mesh sm;

@@ -24,6 +24,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <vector>
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -318,4 +319,48 @@ BOOST_AUTO_TEST_CASE(a_degenerate_initial_triangle_is_untangled)
   BOOST_TEST(std::stoul(r.message) >= flipped);
   BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
   BOOST_TEST(std::abs(r.distortion - 6.52866) < 1e-4); // the optimum of the cat with its seams fixed
+}
+
+// compute_initial_parameterization()'s own map, passed back as the initial
+// map, is taken as it is, tiny triangles included (Tutte's map squeezes the
+// octopus' tentacles below 1e-12 of the chart's area): the same result as the
+// default start (it was refused: ERROR_FLIPPED_UV_TRIANGLE).
+BOOST_AUTO_TEST_CASE(the_packages_own_initial_map_is_accepted_as_initial_map)
+{
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/octopus_mainComp_f6000.obj", sm));
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  auto seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  BOOST_REQUIRE(SMSO::compute_initial_parameterization(sm, seam, uv) == SMSO::OK);
+
+  // the map has triangles that uvmetrics.py would call degenerate, none flipped
+  double total = 0;
+  std::vector<double> area2;
+  for(auto f : faces(sm))
+  {
+    const auto h = halfedge(f, sm);
+    const Point_2 a = get(uv, h), b = get(uv, next(h, sm)), c = get(uv, next(next(h, sm), sm));
+    area2.push_back((b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x()));
+    total += area2.back();
+  }
+  std::size_t tiny = 0;
+  for(double a : area2)
+  {
+    BOOST_REQUIRE(a > 0);
+    if(a <= 1e-12 * total) ++tiny;
+  }
+  BOOST_TEST_MESSAGE("octopus: " << tiny << " triangles below 1e-12 of the chart's UV area");
+  BOOST_REQUIRE(tiny > 0);
+
+  const SMSO::Optimization_result given =
+    SMSO::minimize_distortion(sm, uv, SMSO_np::edge_is_seam_map(seam).use_uv_map_as_initial(true));
+  auto uv2 = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv2").first;
+  auto seam2 = sm.add_property_map<edge_descriptor, bool>("e:seam2", false).first;
+  const SMSO::Optimization_result fresh = SMSO::minimize_distortion(sm, uv2, SMSO_np::edge_is_seam_map(seam2));
+  BOOST_TEST_MESSAGE("given: " << SMSO::get_error_message(given.status) << " " << given.message);
+  BOOST_TEST(given.status == SMSO::OK);
+  BOOST_TEST(fresh.status == SMSO::OK);
+  BOOST_TEST(given.iterations == fresh.iterations);
+  BOOST_TEST(given.distortion == fresh.distortion);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
 }

@@ -22,7 +22,8 @@ A model is default constructible and copy constructible; it is passed by
 value, like CGAL's own solver traits, so a copy may share the factorization
 with the original.
 
-\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_simplicial_ldlt_traits` (the default)
+\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Default_sparse_solver_traits` (the default)
+\cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_simplicial_ldlt_traits`
 \cgalHasModel `CGAL::Surface_mesh_seam_optimization::Cholmod_traits` (when SuiteSparse is found)
 \cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_sparse_solver_traits` with any Eigen sparse direct solver
 

@@ -45,7 +45,7 @@ struct Seam_optimizer_access
 /// \tparam Visitor a model of `SeamOptimizationVisitor`
 template <typename TriangleMesh,
           typename Energy = Symmetric_Dirichlet_energy,
-          typename SolverTraits = Eigen_simplicial_ldlt_traits,
+          typename SolverTraits = Default_sparse_solver_traits,
           typename Visitor = Default_seam_optimization_visitor>
 class Seam_optimizer
 {

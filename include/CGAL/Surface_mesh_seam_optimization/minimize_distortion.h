@@ -81,7 +81,7 @@ namespace Surface_mesh_seam_optimization {
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{the sparse solver of the Newton steps}
 ///     \cgalParamType{a model of `SparseSolverTraits`}
-///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
+///     \cgalParamDefault{`Default_sparse_solver_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{cap on Newton iterations (CGAL's parameter; `maximum_number_of_iterations`, the
@@ -126,7 +126,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
 
   const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                 Eigen_simplicial_ldlt_traits());
+                                 Default_sparse_solver_traits());
   const std::size_t max_iterations =
     internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
   internal::Newton_settings settings;

@@ -90,7 +90,7 @@ namespace Surface_mesh_seam_optimization {
 ///   \cgalParamNBegin{sparse_linear_solver}
 ///     \cgalParamDescription{a model of `SparseSolverTraits`}
 ///     \cgalParamType{a model of `SparseSolverTraits`}
-///     \cgalParamDefault{`Eigen_simplicial_ldlt_traits`}
+///     \cgalParamDefault{`Default_sparse_solver_traits`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{a model of `SeamOptimizationVisitor`. Passed by value (`visitor(v)`,
@@ -150,7 +150,7 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
                                                  Symmetric_Dirichlet_energy()))> Energy;
   typedef std::decay_t<decltype(choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                                 Eigen_simplicial_ldlt_traits()))> Solver;
+                                                 Default_sparse_solver_traits()))> Solver;
   auto visitor_holder = internal::visitor_parameter(np); // a copy of a visitor passed by value
   auto& visitor = internal::unwrap_visitor(visitor_holder);
 

@@ -66,12 +66,12 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
       seam.assign(cm.corner_vertex.size(), 0);
     ec = compute_default(seam);
     if(ec != OK) return ec;
-    for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
-      if(!(cm.signed_uv_area2(f) > 0))
-      {
-        message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
-        return ERROR_FLIPPED_UV_TRIANGLE;
-      }
+    const std::size_t f = first_face_outside_barrier_domain(cm);
+    if(f < cm.number_of_faces())
+    {
+      message = "UV triangle of face " + std::to_string(f) + " is flipped or degenerate";
+      return ERROR_FLIPPED_UV_TRIANGLE;
+    }
     return OK;
   }
 
@@ -84,10 +84,14 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
   label_uv_vertices(cm, seam);
   set_uvs_from_corners(cm, corner_uvs);
 
-  // Maps of Surface_mesh_parameterization's LSCM and ARAP parameterizers
-  // usually fold a little: untangled locally, or replaced by the default map.
+  // A map the descent can start from is kept as it is, tiny triangles
+  // included (Tutte's maps of long protrusions, compute_initial_parameterization()'s
+  // own too: the descent expands them as it does in the default map). Maps of
+  // Surface_mesh_parameterization's LSCM and ARAP parameterizers usually fold
+  // a little: untangled locally, or replaced by the default map.
+  if(first_face_outside_barrier_domain(cm) == cm.number_of_faces()) return OK;
   std::string which;
-  if(count_invalid_uv_triangles(cm, &which) == 0) return OK;
+  count_invalid_uv_triangles(cm, &which);
   std::size_t count = 0;
   if(untangle_uv_map(cm, count))
   {
@@ -96,7 +100,7 @@ Error_code initialize_cut_mesh(const TriangleMesh& tm, UVMap uvmap, const NamedP
   }
   std::string default_message;
   std::swap(default_message, message);
-  if(compute_default(seam) != OK || count_invalid_uv_triangles(cm) > 0)
+  if(compute_default(seam) != OK || first_face_outside_barrier_domain(cm) < cm.number_of_faces())
   {
     message = which + " (and neither untangling it nor the default initial map with its seams worked)";
     return ERROR_FLIPPED_UV_TRIANGLE;

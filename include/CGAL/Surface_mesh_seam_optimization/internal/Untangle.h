@@ -61,6 +61,22 @@ inline std::size_t count_invalid_uv_triangles(const Cut_mesh& cm, std::string* f
   return n;
 }
 
+// The first face whose UV triangle is flipped, of zero area or of an E_SD
+// that is not finite (outside the domain of the barrier energies the descent
+// minimizes), or the number of faces if there is none.
+inline std::size_t first_face_outside_barrier_domain(const Cut_mesh& cm)
+{
+  const Symmetric_Dirichlet_energy sd;
+  Eigen::Matrix2d J;
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+  {
+    if(!(cm.signed_uv_area2(f) > 0)) return f;
+    face_jacobian(cm, f, cm.uv.data(), J);
+    if(!std::isfinite(sd.value(J))) return f;
+  }
+  return cm.number_of_faces();
+}
+
 // Untangles the invalid triangles of the map in place: the region of the
 // invalid faces grown by r rings (r = 1, 2, 4, ... up to `max_rings`), its
 // UV vertices that are neither on its border nor on a chart's boundary
