@@ -155,6 +155,8 @@ by_mode = {}
 for r in rows: by_mode.setdefault(r["mode"], {})[r["mesh"]] = r
 dist, chol, seam = by_mode.get("distortion", {}), by_mode.get("ldlt", {}), by_mode.get("seams", {})
 per_it = lambda r: num(r["seconds"]) / num(r["iterations"]) if num(r["iterations"]) and num(r["seconds"]) else None
+# a capped descent whose map still has a tiny triangle returns no map, but its iterations were timed
+timed = lambda r: finished(r) or (r["status"] == "ERROR_DEGENERATE_UV_RESULT" and num(r["iterations"]) is not None)
 
 with open(prefix + ".csv", "w", newline="") as f:
     cols = fields + ["uvm_e_sd", "uvm_flips", "uvm_valid"]
@@ -169,14 +171,14 @@ def add_fit(label, rs, keep, key):
     return fr
 add_fit("initial map (circle + Tutte): seconds", dist, lambda r: num(r["initial_map_seconds"]) is not None,
         lambda r: num(r["initial_map_seconds"]))
-add_fit("minimize_distortion(), default solver: seconds per Newton iteration", dist, finished, per_it)
+add_fit("minimize_distortion(), default solver: seconds per Newton iteration", dist, timed, per_it)
 add_fit("minimize_distortion(), default solver: seconds to convergence", dist, converged, lambda r: num(r["seconds"]))
 add_fit("minimize_distortion(): Newton iterations to convergence", dist, converged,
         lambda r: num(r["iterations"]))
-add_fit("minimize_distortion(), default solver: peak MB", dist, finished, lambda r: num(r["peak_mb"]))
+add_fit("minimize_distortion(), default solver: peak MB", dist, timed, lambda r: num(r["peak_mb"]))
 if chol:
-    add_fit("minimize_distortion(), SimplicialLDLT: seconds per Newton iteration", chol, finished, per_it)
-    add_fit("minimize_distortion(), SimplicialLDLT: peak MB", chol, finished, lambda r: num(r["peak_mb"]))
+    add_fit("minimize_distortion(), SimplicialLDLT: seconds per Newton iteration", chol, timed, per_it)
+    add_fit("minimize_distortion(), SimplicialLDLT: peak MB", chol, timed, lambda r: num(r["peak_mb"]))
 seam_fit = add_fit("optimize_seams(): seconds", seam, finished, lambda r: num(r["seconds"]))
 add_fit("optimize_seams(): Newton iterations", seam, finished, lambda r: num(r["iterations"]))
 add_fit("optimize_seams(): peak MB", seam, finished, lambda r: num(r["peak_mb"]))
@@ -209,15 +211,15 @@ L.append("|" + "---|" * len(hdr))
 for name, d in dist.items():
     s = seam.get(name, {})
     it = d["iterations"] or "-"
-    capped = d["status"] == "WARNING_MAXIMUM_ITERATIONS"
+    capped = d["status"] in ("WARNING_MAXIMUM_ITERATIONS", "ERROR_DEGENERATE_UV_RESULT")
     if capped: it += " (capped)"
     cells = [name, d["faces"], fmt(num(d["initial_map_seconds"])), fmt(num(d["seconds"])), it,
-             fmt(per_it(d), 4) if finished(d) else "-",
+             fmt(per_it(d), 4) if timed(d) else "-",
              "-" if capped else fmt(num(d["uvm_e_sd"]) if d["uvm_e_sd"] is not None else num(d["e_sd"]), 4),
              fmt(num(d["peak_mb"]), 0)]
     if chol:
         c = chol.get(name)
-        cells += [fmt(per_it(c), 4) if c and finished(c) else (c["status"] if c else "-"),
+        cells += [fmt(per_it(c), 4) if c and timed(c) else (c["status"] if c else "-"),
                   fmt(num(c["peak_mb"]), 0) if c else "-"]
     st = s.get("status", "-") or "-"
     skipped = st == "SKIPPED"

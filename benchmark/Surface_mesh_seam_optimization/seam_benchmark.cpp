@@ -93,7 +93,7 @@ struct Row
   double seconds = 0, initial_map_seconds = -1; // -1: not timed apart
   std::size_t iterations = 0, topology_operations = 0, charts = 0, flips = 0;
   double e_sd = 0, seam = 0, lambda = 0;
-  bool bound_met = false, has_result = false;
+  bool bound_met = false, has_result = false, timed_only = false;
   std::size_t overlaps = 0, scaffold_rebuilds = 0;
   SMSO::Optimization_timings timings;
   std::string status = "ERROR_UNKNOWN";
@@ -103,7 +103,17 @@ static void print(const Row& r)
 {
   if(!r.has_result) // rejected or unreadable: the figures are left empty
   {
-    std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,,,,,,,,,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
+    if(r.timed_only) // iterations and times only
+    {
+      const SMSO::Optimization_timings& t = r.timings;
+      std::printf("%s,%zu,%.3f,%zu,,,,,,%.1f,%s,,,", r.name.c_str(), r.faces, r.seconds, r.iterations, peak_mb(),
+                  r.status.c_str());
+      if(r.initial_map_seconds >= 0) std::printf("%.3f", r.initial_map_seconds);
+      std::printf(",,,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", t.assembly, t.factorization, t.symbolic_analysis, t.line_search,
+                  t.topology, t.scaffold);
+    }
+    else
+      std::printf("%s,%zu,%.3f,,,,,,,%.1f,%s,,,,,,,,,,,\n", r.name.c_str(), r.faces, r.seconds, peak_mb(), r.status.c_str());
     std::fflush(stdout);
     return;
   }
@@ -176,6 +186,14 @@ static Row run(const std::string& file, const Settings& settings)
   if(!r.has_result())
   {
     if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";
+    // a capped descent whose map still has a tiny triangle: no result, but its
+    // iterations were timed (the scaling benchmark's seconds per iteration)
+    if(r.status == SMSO::ERROR_DEGENERATE_UV_RESULT && r.iterations > 0)
+    {
+      row.timed_only = true;
+      row.iterations = r.iterations;
+      row.timings = r.timings;
+    }
     return row;
   }
   row.has_result = true;
