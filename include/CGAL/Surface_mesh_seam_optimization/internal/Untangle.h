@@ -24,6 +24,16 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+// Face f's UV triangle has twice its signed area above `least_area2` and a
+// finite E_SD.
+inline bool uv_triangle_above(const Cut_mesh& cm, std::size_t f, double least_area2)
+{
+  if(!(cm.signed_uv_area2(f) > least_area2)) return false;
+  Eigen::Matrix2d J;
+  face_jacobian(cm, f, cm.uv.data(), J);
+  return std::isfinite(Symmetric_Dirichlet_energy().value(J));
+}
+
 // Per face: flipped or numerically degenerate (twice the signed area <=
 // 1e-12 times that of the face's chart, uvmetrics.py's test), or an E_SD
 // that is not finite. Returns the count.
@@ -36,15 +46,8 @@ inline std::size_t mark_invalid_uv_triangles(const Cut_mesh& cm, std::vector<cha
   for(std::size_t f = 0; f < nf; ++f) chart_area2[chart[f]] += std::abs(cm.signed_uv_area2(f));
   invalid.assign(nf, 0);
   std::size_t n = 0;
-  const Symmetric_Dirichlet_energy sd;
-  Eigen::Matrix2d J;
   for(std::size_t f = 0; f < nf; ++f)
-  {
-    face_jacobian(cm, f, cm.uv.data(), J);
-    if(cm.signed_uv_area2(f) > 1e-12 * chart_area2[chart[f]] && std::isfinite(sd.value(J))) continue;
-    invalid[f] = 1;
-    ++n;
-  }
+    if(!uv_triangle_above(cm, f, 1e-12 * chart_area2[chart[f]])) { invalid[f] = 1; ++n; }
   return n;
 }
 
@@ -66,14 +69,8 @@ inline std::size_t count_invalid_uv_triangles(const Cut_mesh& cm, std::string* f
 // minimizes), or the number of faces if there is none.
 inline std::size_t first_face_outside_barrier_domain(const Cut_mesh& cm)
 {
-  const Symmetric_Dirichlet_energy sd;
-  Eigen::Matrix2d J;
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
-  {
-    if(!(cm.signed_uv_area2(f) > 0)) return f;
-    face_jacobian(cm, f, cm.uv.data(), J);
-    if(!std::isfinite(sd.value(J))) return f;
-  }
+    if(!uv_triangle_above(cm, f, 0.)) return f;
   return cm.number_of_faces();
 }
 
