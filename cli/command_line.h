@@ -10,6 +10,7 @@
 
 #include "pictures.h"
 #include "run_optimization.h"
+#include "seam_weights.h"
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
@@ -102,6 +103,11 @@ struct Options
   bool repair = false;                    // repair the input instead of refusing it
   std::string svg;                        // empty: no UV layout picture
   std::string png;                        // empty: no rendering
+  std::string seam_weights;               // --seam-weights FILE; empty: every edge costs 1
+  double region_seam_cost = default_region_seam_cost; // the W of FILE:W (a region's cost)
+  bool has_region_seam_cost = false;
+  bool hide_seams = false;                // seam costs from visibility (SMSO::visibility_seam_costs)
+  bool measure_visibility = false;        // report the seams' share on the most visible edges
 
   Mode mode() const
   {
@@ -180,6 +186,24 @@ inline void print_help(std::ostream& os)
      << "  --energy NAME           distortion energy the descent minimizes: symmetric_dirichlet,\n"
      << "                          arap or mips; the bound always applies to E_SD, which the\n"
      << "                          report gives in all cases (default: symmetric_dirichlet)\n"
+     << "  --seam-weights FILE[:W] regional seam preferences: seams cost W times their length\n"
+     << "                          on a region of vertices (W > 1 keeps them out, W < 1 draws\n"
+     << "                          them in; default W: 1000) or what FILE gives per vertex or\n"
+     << "                          edge; one form per file, vertices 0-based in file order:\n"
+     << "                          'i' a region vertex (OptCuts' *_selected.txt), 'i w' vertex\n"
+     << "                          i costs w (an edge the mean of its two), 'i j w' edge ij\n"
+     << "                          costs w; '#' comments; others cost 1. The report gives the\n"
+     << "                          weighted seam length too (default: none; not with\n"
+     << "                          --keep-seams or --repair)\n"
+     << "  --hide-seams            move seams to where they show least: each edge's seam cost\n"
+     << "                          grows with its visibility (ambient occlusion by ray\n"
+     << "                          casting, and concave creases), from 1 for the least visible\n"
+     << "                          edge to 4 for the most visible (by rank); multiplies\n"
+     << "                          --seam-weights' costs. The report gives visible_seam_share\n"
+     << "                          (default: off; not with --keep-seams)\n"
+     << "  --measure-visibility    report visible_seam_share, the share of the seam length on\n"
+     << "                          the most visible quarter of the edges, without hiding\n"
+     << "                          (default: off)\n"
      << "  --max-iterations N      cap on Newton iterations (default: "
      << default_max_iterations_seams << ", or " << default_max_iterations_keep
      << " with --keep-seams)\n"
@@ -207,7 +231,9 @@ inline void print_help(std::ostream& os)
      << "  --report OUT.json       write a JSON report: status, message, mode, e_sd,\n"
      << "                          e_sd_optimal_scale, initial_e_sd, distortion_bound,\n"
      << "                          bound_met, seam_weight,\n"
-     << "                          lambda, seam_length, seam_length_normalized, charts,\n"
+     << "                          lambda, seam_length, seam_length_normalized,\n"
+     << "                          weighted_seam_length_normalized, seam_weights,\n"
+     << "                          hide_seams, visible_seam_share, charts,\n"
      << "                          normalized, packed, texture_size, margin, fill_rate,\n"
      << "                          iterations, topology_operations, bijective,\n"
      << "                          overlapping_triangle_pairs, scaffold_rebuilds, energy,\n"
@@ -263,10 +289,11 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
   namespace po = boost::program_options;
   po::options_description recognized;
   recognized.add_options()("help,h", "")("output,o", po::value<std::string>(), "");
-  for(const char* name : {"repair", "keep-seams", "use-input-uv", "normalize", "pack", "quiet", "no-bijectivity"})
+  for(const char* name : {"repair", "keep-seams", "use-input-uv", "normalize", "pack", "quiet", "no-bijectivity",
+                          "hide-seams", "measure-visibility"})
     recognized.add_options()(name, "");
   for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
-                          "distortion-bound", "seam-weight", "max-iterations", "recut-rounds"})
+                          "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights"})
     recognized.add_options()(name, po::value<std::string>(), "");
   recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
   po::positional_options_description positional;
@@ -359,7 +386,8 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     const std::pair<const char*, bool*> switches[] = {
       {"--repair", &options.repair}, {"--keep-seams", &options.keep_seams},
       {"--use-input-uv", &options.use_input_uv}, {"--normalize", &options.normalize}, {"--pack", &options.pack},
-      {"--quiet", &options.quiet}, {"--no-bijectivity", &options.no_bijectivity}};
+      {"--quiet", &options.quiet}, {"--no-bijectivity", &options.no_bijectivity},
+      {"--hide-seams", &options.hide_seams}, {"--measure-visibility", &options.measure_visibility}};
     const std::pair<const char*, std::string*> paths[] = {
       {"--output", &options.output}, {"--report", &options.report},
       {"--svg", &options.svg}, {"--png", &options.png}};
@@ -430,6 +458,18 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
                  &options.has_seam_weight))
         return Parse_status::ERROR;
     }
+    else if(key == "--seam-weights")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(!split_seam_weights_argument(s, options.seam_weights, options.region_seam_cost,
+                                      options.has_region_seam_cost))
+      {
+        error = "option '--seam-weights' needs FILE or FILE:W with a cost W >= 0, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+    }
     else if(key == "--max-iterations")
     {
       if(!number(options.max_iterations, [](std::size_t) { return true; }, "a non-negative integer",
@@ -473,6 +513,18 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
   if(!(2 * options.margin < options.texture_size))
   {
     error = "option '--margin' must be less than half of the texture size";
+    return Parse_status::ERROR;
+  }
+  if(options.hide_seams && options.keep_seams)
+  {
+    error = "option '--hide-seams' prices seams, which '--keep-seams' does not optimize";
+    return Parse_status::ERROR;
+  }
+  if(!options.seam_weights.empty() && (options.keep_seams || options.repair))
+  {
+    error = std::string("option '--seam-weights' ") +
+            (options.keep_seams ? "prices seams, which '--keep-seams' does not optimize"
+                                : "numbers the input's vertices, which '--repair' may renumber");
     return Parse_status::ERROR;
   }
   if(options.use_input_uv && options.repair)

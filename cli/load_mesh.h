@@ -12,6 +12,7 @@
 #include "read_polygon_soup_bounded.h"
 #include "repair_input.h"
 #include "run_optimization.h"
+#include "seam_weights.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -93,9 +94,11 @@ inline bool check_input_file(const std::string& path, Load_failure& failure)
 // `repair`, fixes what Polygon_mesh_processing can fix instead of refusing
 // it, and counts the changes in `repair`. Faces are numbered from 1 in file
 // order in every message. Returns true on success; otherwise `failure` says
-// why.
+// why. Without `repair`, `file_vertex` (if given) receives the mesh vertex
+// index of each of the file's vertices (no_mesh_vertex: used by no face).
 inline bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::string>& notes,
-                      Load_failure& failure, Repair_summary* repair = nullptr)
+                      Load_failure& failure, Repair_summary* repair = nullptr,
+                      std::vector<std::size_t>* file_vertex = nullptr)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   // What an error line adds when --repair would have fixed the defect.
@@ -185,6 +188,13 @@ inline bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::stri
 
   // Unreferenced points would become isolated vertices: drop them.
   const std::size_t unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), 0));
+  if(file_vertex)
+  {
+    // polygon_soup_to_polygon_mesh() adds the points as vertices in order
+    file_vertex->assign(points.size(), no_mesh_vertex);
+    for(std::size_t i = 0, kept = 0; i < points.size(); ++i)
+      if(used[i]) (*file_vertex)[i] = kept++;
+  }
   if(unused > 0)
   {
     std::vector<std::size_t> new_index(points.size());

@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
+#include <CGAL/Surface_mesh_seam_optimization/seam_visibility.h>
 #include <CGAL/Surface_mesh_seam_optimization/seams_from_uv_map.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -69,6 +70,9 @@ struct Run_report
   Mode mode = Mode::DISTORTION_BOUND;
   double distortion_bound = default_distortion_bound;   // bound mode only
   double seam_weight = 0;                               // seam-weight mode only
+  std::string seam_weights;                             // --seam-weights FILE
+  bool hide_seams = false;
+  double visible_seam_share = std::numeric_limits<double>::quiet_NaN(); // measured: null otherwise
   std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
   bool normalized = false;                              // --normalize applied to the written UVs
   bool packed = false;                                  // charts packed (--pack, or --normalize with several)
@@ -147,6 +151,10 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("lambda", r.mode == Mode::KEEP_SEAMS || !ran ? "null" : json_number(res.lambda));
   fields.emplace_back("seam_length", json_number(res.seam_length));
   fields.emplace_back("seam_length_normalized", json_number(res.seam_length_normalized));
+  fields.emplace_back("weighted_seam_length_normalized", json_number(res.weighted_seam_length_normalized));
+  fields.emplace_back("seam_weights", r.seam_weights.empty() ? "null" : str(r.seam_weights));
+  fields.emplace_back("hide_seams", r.hide_seams ? "true" : "false");
+  fields.emplace_back("visible_seam_share", ran ? json_number(r.visible_seam_share) : "null");
   fields.emplace_back("charts", std::to_string(res.charts));
   fields.emplace_back("iterations", std::to_string(res.iterations));
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
@@ -407,6 +415,8 @@ int run(const Options& options)
   report.energy = options.energy;
   report.threads = options.threads;
   report.repair = options.repair;
+  report.seam_weights = options.seam_weights;
+  report.hide_seams = options.hide_seams;
 
 #ifdef CGAL_LINKED_WITH_TBB
   // Caps TBB's workers for the whole run (the parallel candidate scoring).
@@ -423,13 +433,18 @@ int run(const Options& options)
   UV_map uvmap;
   Load_failure failure;
   bool loaded = false;
+  std::vector<std::size_t> file_vertex; // --seam-weights: file vertex -> mesh vertex
   if(options.use_input_uv)
   {
     uvmap = mesh.add_property_map<halfedge_descriptor, Point_2>("h:smso_uv", Point_2(0, 0)).first;
     loaded = load_mesh_with_uv_map(options.input, mesh, uvmap, failure);
   }
   else
-    loaded = load_mesh(options.input, mesh, notes, failure, options.repair ? &report.repair_summary : nullptr);
+    loaded = load_mesh(options.input, mesh, notes, failure, options.repair ? &report.repair_summary : nullptr,
+                       &file_vertex);
+  if(loaded && options.use_input_uv)
+    for(std::size_t i = 0; i < num_vertices(mesh); ++i) // the OBJ reader keeps every vertex, in order
+      file_vertex.push_back(i);
   if(!loaded)
   {
     report.status = failure.status;
@@ -465,6 +480,36 @@ int run(const Options& options)
   request.iteration_cap = options.iteration_cap();
   request.recut_rounds = int(options.recut_rounds);
   request.time_limit = options.time_limit;
+  request.vertex_seam_cost = mesh.add_property_map<vertex_descriptor, double>("v:smso_seam_cost", 1.).first;
+  request.edge_seam_cost = mesh.add_property_map<edge_descriptor, double>("e:smso_seam_cost", 1.).first;
+  if(!options.seam_weights.empty())
+  {
+    Seam_weights_form form;
+    std::string error;
+    if(!read_seam_weights(options.seam_weights, mesh, file_vertex, options.region_seam_cost,
+                          options.has_region_seam_cost, request.vertex_seam_cost, request.edge_seam_cost, form,
+                          error))
+    {
+      report.status = "ERROR_INPUT";
+      report.message = error;
+      print_error(error);
+      return finish(options, report, t0, EXIT_RUN_FAILED);
+    }
+  }
+  // Visibility of each edge, for --hide-seams' costs and the visible share.
+  Edge_cost_map visibility;
+  if(options.hide_seams || options.measure_visibility)
+  {
+    visibility = mesh.add_property_map<edge_descriptor, double>("e:smso_visibility", 1.).first;
+    SMSO::edge_visibility(mesh, visibility);
+  }
+  if(options.hide_seams)
+  {
+    Edge_cost_map hiding = mesh.add_property_map<edge_descriptor, double>("e:smso_hiding_cost", 1.).first;
+    SMSO::internal::seam_costs_from_visibility_ranks(mesh, visibility, hiding, default_visibility_cost_ratio);
+    for(edge_descriptor e : edges(mesh))
+      put(request.edge_seam_cost, e, get(request.edge_seam_cost, e) * get(hiding, e));
+  }
   request.progress = [&progress](const SMSO::Seam_optimization_progress& p) { return progress.update(p); };
 
   const auto t_opt = std::chrono::steady_clock::now();
@@ -489,6 +534,8 @@ int run(const Options& options)
     report.notes.push_back(res.message);
   }
 
+  if(res.has_result() && (options.hide_seams || options.measure_visibility))
+    report.visible_seam_share = SMSO::seam_share_on_most_visible_edges(mesh, visibility, seams, 0.25);
   if(!res.has_result())
   {
     std::string line = SMSO::get_error_message(res.status);

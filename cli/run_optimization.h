@@ -34,6 +34,8 @@ typedef boost::graph_traits<Mesh>::edge_descriptor          edge_descriptor;
 typedef boost::graph_traits<Mesh>::face_descriptor          face_descriptor;
 typedef Mesh::Property_map<halfedge_descriptor, Point_2>    UV_map;
 typedef Mesh::Property_map<edge_descriptor, bool>           Seam_map;
+typedef Mesh::Property_map<vertex_descriptor, double>       Vertex_cost_map;
+typedef Mesh::Property_map<edge_descriptor, double>         Edge_cost_map;
 
 // What the run does: the bound mode (OptCuts, the default), a fixed seam
 // weight (no dual step), or the distortion-only mode with the seams kept.
@@ -53,6 +55,9 @@ struct Optimization_request
   std::size_t iteration_cap = 0;
   int recut_rounds = SMSO::internal::default_number_of_recut_rounds;  // DISTORTION_BOUND only
   double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
+  // Seam costs (vertex_seam_cost_map, seam_cost_map; all 1 without --seam-weights). Not in KEEP_SEAMS.
+  Vertex_cost_map vertex_seam_cost;
+  Edge_cost_map edge_seam_cost;
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.
   std::function<bool(const SMSO::Seam_optimization_progress&)> progress;
 };

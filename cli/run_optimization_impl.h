@@ -40,7 +40,10 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
                         .time_limit(request.time_limit > 0 ? request.time_limit
                                                            : std::numeric_limits<double>::infinity());
   Function_visitor visitor{&request.progress};
-  const auto with_visitor = common.bijective(request.bijective).visitor(std::ref(visitor));
+  const auto with_visitor = common.bijective(request.bijective)
+                              .visitor(std::ref(visitor))
+                              .vertex_seam_cost_map(request.vertex_seam_cost)
+                              .seam_cost_map(request.edge_seam_cost);
 
   switch(request.mode)
   {

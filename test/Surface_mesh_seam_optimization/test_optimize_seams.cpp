@@ -13,10 +13,16 @@
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
+#include <CGAL/Surface_mesh_seam_optimization/seam_visibility.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -588,4 +594,289 @@ BOOST_AUTO_TEST_CASE(straightening_detours_shortens_the_seams_within_the_bound)
   BOOST_TEST(ov_on == 0u);
   BOOST_TEST(inv_on.empty());
   BOOST_TEST(se_on < 0.97 * se_off);
+}
+
+// ---------------------------------------------------------------------------
+// Regional seam preferences (seam_cost_map, vertex_seam_cost_map)
+
+namespace {
+
+typedef Surface_mesh::Vertex_index vertex_descriptor;
+
+std::set<vertex_descriptor> seam_vertices(const Run& r)
+{
+  std::set<vertex_descriptor> s;
+  for(edge_descriptor e : r.sm.edges())
+    if(r.seam[e])
+    {
+      s.insert(r.sm.vertex(e, 0));
+      s.insert(r.sm.vertex(e, 1));
+    }
+  return s;
+}
+
+// 3D length of the seams with both ends in `region`
+double seam_length_inside(const Run& r, const std::set<vertex_descriptor>& region)
+{
+  double l = 0;
+  for(edge_descriptor e : r.sm.edges())
+    if(r.seam[e] && region.count(r.sm.vertex(e, 0)) && region.count(r.sm.vertex(e, 1)))
+      l += std::sqrt(CGAL::squared_distance(r.sm.point(r.sm.vertex(e, 0)), r.sm.point(r.sm.vertex(e, 1))));
+  return l;
+}
+
+double surface_area(const Surface_mesh& sm)
+{
+  double a = 0;
+  for(auto f : sm.faces())
+  {
+    const halfedge_descriptor h = sm.halfedge(f);
+    a += std::sqrt(K::Triangle_3(sm.point(sm.source(h)), sm.point(sm.target(h)),
+                                 sm.point(sm.target(sm.next(h)))).squared_area());
+  }
+  return a;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(region_seam_costs_average_over_the_one_ring)
+{
+  // a fan of six triangles: centre c, rim r0..r5
+  Surface_mesh sm;
+  const vertex_descriptor c = sm.add_vertex(K::Point_3(0, 0, 0));
+  std::vector<vertex_descriptor> rim;
+  for(int i = 0; i < 6; ++i)
+    rim.push_back(sm.add_vertex(K::Point_3(std::cos(i * CGAL_PI / 3), std::sin(i * CGAL_PI / 3), 0)));
+  for(int i = 0; i < 6; ++i) sm.add_face(c, rim[i], rim[(i + 1) % 6]);
+  auto cost = sm.add_property_map<vertex_descriptor, double>("v:cost", 0.).first;
+  SMSO::region_seam_costs(sm, std::vector<vertex_descriptor>{c}, 100., cost);
+  BOOST_TEST(cost[c] == 106. / 7, boost::test_tools::tolerance(1e-15));       // itself and six rim vertices of 1
+  for(vertex_descriptor r : rim)
+    BOOST_TEST(cost[r] == 103. / 4, boost::test_tools::tolerance(1e-15));     // itself, c and two rim neighbours
+  SMSO::region_seam_costs(sm, rim, 0., cost);
+  BOOST_TEST(cost[c] == 1. / 7, boost::test_tools::tolerance(1e-15));
+  for(vertex_descriptor r : rim)
+    BOOST_TEST(cost[r] == 1. / 4, boost::test_tools::tolerance(1e-15));
+}
+
+// A region over the plain run's seams pushes them out (region seam length at
+// most half the plain run's); a cheap region along a route the plain run did
+// not take draws seams in. Both meet the bound, and the reported weighted
+// seam term is the costs times the lengths.
+BOOST_AUTO_TEST_CASE(seam_costs_repel_and_attract_seams)
+{
+  Run plain;
+  run("cat_f1500.obj", plain, SMSO_np::distortion_bound(4.1));
+  BOOST_REQUIRE(plain.result.status == SMSO::OK);
+  BOOST_TEST(plain.result.weighted_seam_length_normalized == plain.result.seam_length_normalized);
+  const std::set<vertex_descriptor> route_a = seam_vertices(plain);
+  const double plain_in_a = seam_length_inside(plain, route_a);
+  BOOST_REQUIRE(plain_in_a > 0);
+
+  auto run_with_region = [](Run& r, const std::set<vertex_descriptor>& region, double region_cost) {
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", r.sm));
+    auto cost = r.sm.add_property_map<vertex_descriptor, double>("v:seam_cost", 1.).first;
+    std::vector<vertex_descriptor> vs(region.begin(), region.end());
+    SMSO::region_seam_costs(r.sm, vs, region_cost, cost);
+    r.uv = r.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    r.seam = r.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+    r.result = SMSO::optimize_seams(r.sm, r.uv, SMSO_np::edge_is_seam_map(r.seam).vertex_seam_cost_map(cost));
+    BOOST_REQUIRE(r.result.status == SMSO::OK);
+    BOOST_TEST(r.result.bound_met);
+    check_valid(r);
+    // the weighted term by hand: each seam edge's length times the mean of its vertices' costs
+    double weighted = 0;
+    for(edge_descriptor e : r.sm.edges())
+      if(r.seam[e])
+        weighted += std::sqrt(CGAL::squared_distance(r.sm.point(r.sm.vertex(e, 0)), r.sm.point(r.sm.vertex(e, 1)))) *
+                    0.5 * (cost[r.sm.vertex(e, 0)] + cost[r.sm.vertex(e, 1)]);
+    weighted /= std::sqrt(surface_area(r.sm) / CGAL_PI);
+    BOOST_TEST(r.result.weighted_seam_length_normalized == weighted, boost::test_tools::tolerance(1e-9));
+  };
+
+  Run repelled;
+  run_with_region(repelled, route_a, 100.);
+  BOOST_TEST_MESSAGE("cat: seams on the plain route " << plain_in_a << " -> " << seam_length_inside(repelled, route_a)
+                     << " with cost 100 there");
+  BOOST_TEST(seam_length_inside(repelled, route_a) <= 0.5 * plain_in_a);
+
+  // the repelled run's own route, less the plain one's vertices: a route the plain run did not take
+  std::set<vertex_descriptor> route_b;
+  for(vertex_descriptor v : seam_vertices(repelled))
+    if(!route_a.count(v)) route_b.insert(v);
+  BOOST_REQUIRE(!route_b.empty());
+  const double plain_in_b = seam_length_inside(plain, route_b);
+  Run attracted;
+  run_with_region(attracted, route_b, 0.1);
+  const double attracted_in_b = seam_length_inside(attracted, route_b);
+  BOOST_TEST_MESSAGE("cat: seams on the other route " << plain_in_b << " -> " << attracted_in_b
+                     << " with cost 0.1 there; weighted E_se " << attracted.result.weighted_seam_length_normalized
+                     << ", plain " << attracted.result.seam_length_normalized);
+  BOOST_TEST(attracted_in_b > plain_in_b + 0.25 * plain.result.seam_length);
+  BOOST_TEST(attracted.result.weighted_seam_length_normalized < attracted.result.seam_length_normalized);
+}
+
+// Costs of 1 everywhere change nothing, to the last bit; invalid costs are
+// refused before anything is written.
+BOOST_AUTO_TEST_CASE(unit_seam_costs_change_nothing_and_invalid_ones_are_refused)
+{
+  Run plain, ones;
+  run("bishop_part_f1000.obj", plain, SMSO_np::distortion_bound(4.1));
+  {
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/bishop_part_f1000.obj", ones.sm));
+    auto vcost = ones.sm.add_property_map<vertex_descriptor, double>("v:c", 1.).first;
+    auto ecost = ones.sm.add_property_map<edge_descriptor, float>("e:c", 1.f).first;
+    ones.uv = ones.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    ones.seam = ones.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+    ones.result = SMSO::optimize_seams(
+      ones.sm, ones.uv, SMSO_np::edge_is_seam_map(ones.seam).seam_cost_map(ecost).vertex_seam_cost_map(vcost));
+  }
+  BOOST_REQUIRE(ones.result.status == SMSO::OK);
+  BOOST_TEST(ones.result.iterations == plain.result.iterations);
+  bool same = true;
+  for(halfedge_descriptor h : plain.sm.halfedges())
+    same = same && plain.uv[h] == ones.uv[h];
+  BOOST_TEST(same);
+
+  for(double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+  {
+    Surface_mesh sm;
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/bishop_part_f1000.obj", sm));
+    auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(7, 7)).first;
+    auto vcost = sm.add_property_map<vertex_descriptor, double>("v:c", 1.).first;
+    auto ecost = sm.add_property_map<edge_descriptor, double>("e:c", 1.).first;
+    vcost[*std::next(sm.vertices().begin(), 10)] = bad;
+    ecost[*std::next(sm.edges().begin(), 10)] = bad;
+    const SMSO::Optimization_result rv = SMSO::optimize_seams(sm, uv, SMSO_np::vertex_seam_cost_map(vcost));
+    BOOST_TEST(rv.status == SMSO::ERROR_WRONG_PARAMETER);
+    BOOST_TEST(rv.message.find("vertex_seam_cost_map") != std::string::npos);
+    const SMSO::Optimization_result re = SMSO::optimize_seams(sm, uv, SMSO_np::seam_cost_map(ecost));
+    BOOST_TEST(re.status == SMSO::ERROR_WRONG_PARAMETER);
+    BOOST_TEST(re.message.find("seam_cost_map") != std::string::npos);
+    // the former name still reads the same map
+    BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::edge_seam_weight_map(ecost)).status == SMSO::ERROR_WRONG_PARAMETER);
+    bool untouched = true;
+    for(halfedge_descriptor h : sm.halfedges())
+      untouched = untouched && uv[h] == Point_2(7, 7);
+    BOOST_TEST(untouched);
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Hidden seams (edge_visibility, visibility_seam_costs)
+
+BOOST_AUTO_TEST_CASE(edge_visibility_on_hand_made_surfaces)
+{
+  // a flat square of two triangles: every direction in front escapes, no crease
+  Surface_mesh flat;
+  const vertex_descriptor a = flat.add_vertex(K::Point_3(0, 0, 0)), b = flat.add_vertex(K::Point_3(1, 0, 0)),
+                          c = flat.add_vertex(K::Point_3(1, 1, 0)), d = flat.add_vertex(K::Point_3(0, 1, 0));
+  flat.add_face(a, b, c);
+  flat.add_face(a, c, d);
+  auto vis = flat.add_property_map<edge_descriptor, double>("e:vis", -1.).first;
+  SMSO::edge_visibility(flat, vis);
+  for(edge_descriptor e : flat.edges()) BOOST_TEST(vis[e] == 1.);
+
+  // folded along x = 1 by 90 degrees, up (a valley) and down (a ridge); the
+  // valley's fold edge has crease factor 1 - (pi/2)/pi = 1/2 times an openness <= 1
+  for(double up : {1., -1.})
+  {
+    Surface_mesh fold;
+    const vertex_descriptor p0 = fold.add_vertex(K::Point_3(0, 0, 0)), p1 = fold.add_vertex(K::Point_3(1, 0, 0)),
+                            p2 = fold.add_vertex(K::Point_3(1, 1, 0)), p3 = fold.add_vertex(K::Point_3(0, 1, 0)),
+                            q1 = fold.add_vertex(K::Point_3(1, 0, up)), q2 = fold.add_vertex(K::Point_3(1, 1, up));
+    fold.add_face(p0, p1, p2);
+    fold.add_face(p0, p2, p3);
+    fold.add_face(p1, q1, q2);
+    fold.add_face(p1, q2, p2);
+    auto v = fold.add_property_map<edge_descriptor, double>("e:vis", -1.).first;
+    SMSO::edge_visibility(fold, v, SMSO_np::number_of_rays(256));
+    const edge_descriptor hinge = fold.edge(fold.halfedge(p1, p2));
+    const edge_descriptor far_edge = fold.edge(fold.halfedge(p0, p3));
+    if(up > 0)
+    {
+      BOOST_TEST(v[hinge] <= 0.5);
+      BOOST_TEST(v[hinge] > 0.2);       // half of the front is open
+      BOOST_TEST(v[far_edge] < 1.);     // the wall hides part of the sky
+    }
+    else
+    {
+      BOOST_TEST(v[hinge] == 1.);       // a ridge: nothing in front, no crease factor
+      BOOST_TEST(v[far_edge] == 1.);
+    }
+  }
+}
+
+// Costs from visibility ranks span [1, ratio] in the order of visibility; the
+// visible share is the seam length on the most visible quarter over all of it.
+BOOST_AUTO_TEST_CASE(visibility_costs_and_visible_share)
+{
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", sm));
+  auto vis = sm.add_property_map<edge_descriptor, double>("e:vis", -1.).first;
+  auto cost = sm.add_property_map<edge_descriptor, double>("e:cost", -1.).first;
+  SMSO::edge_visibility(sm, vis);
+  SMSO::visibility_seam_costs(sm, cost, SMSO_np::visibility_cost_ratio(4.));
+  double lo = 1e9, hi = -1e9;
+  std::vector<std::pair<double, double> > vc;
+  for(edge_descriptor e : sm.edges())
+  {
+    BOOST_REQUIRE(vis[e] >= 0.);
+    BOOST_REQUIRE(vis[e] <= 1.);
+    lo = (std::min)(lo, cost[e]);
+    hi = (std::max)(hi, cost[e]);
+    vc.emplace_back(vis[e], cost[e]);
+  }
+  BOOST_TEST(lo == 1., boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(hi == 4., boost::test_tools::tolerance(1e-12));
+  std::sort(vc.begin(), vc.end());
+  bool monotone = true;
+  for(std::size_t i = 1; i < vc.size(); ++i) monotone = monotone && vc[i].second >= vc[i - 1].second;
+  BOOST_TEST(monotone);
+  BOOST_TEST(vc.front().first < 0.9 * vc.back().first); // the cat has hidden parts
+
+  // hand-made visibilities: edge i has visibility i; seams on the top edge and on edge 0
+  auto hand = sm.add_property_map<edge_descriptor, double>("e:hand", 0.).first;
+  auto seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  std::vector<edge_descriptor> es(sm.edges().begin(), sm.edges().end());
+  for(std::size_t i = 0; i < es.size(); ++i) hand[es[i]] = double(i);
+  seam[es.front()] = seam[es.back()] = true;
+  auto length = [&](edge_descriptor e) {
+    return std::sqrt(CGAL::squared_distance(sm.point(sm.vertex(e, 0)), sm.point(sm.vertex(e, 1))));
+  };
+  const double expected = length(es.back()) / (length(es.back()) + length(es.front()));
+  BOOST_TEST(SMSO::seam_share_on_most_visible_edges(sm, hand, seam, 0.25) == expected,
+             boost::test_tools::tolerance(1e-12));
+  seam[es.back()] = false;
+  BOOST_TEST(SMSO::seam_share_on_most_visible_edges(sm, hand, seam, 0.25) == 0.);
+}
+
+// The seams move off the most visible quarter of the edges (share at most
+// half the default run's) for at most 1.3 times the seam length, within the bound.
+BOOST_AUTO_TEST_CASE(visibility_costs_hide_the_seams)
+{
+  Run plain, hidden;
+  run("cat_f1500.obj", plain, SMSO_np::distortion_bound(4.1));
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", hidden.sm));
+  auto cost = hidden.sm.add_property_map<edge_descriptor, double>("e:cost", 1.).first;
+  SMSO::visibility_seam_costs(hidden.sm, cost);
+  hidden.uv = hidden.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  hidden.seam = hidden.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  hidden.result = SMSO::optimize_seams(hidden.sm, hidden.uv, SMSO_np::edge_is_seam_map(hidden.seam).seam_cost_map(cost));
+  BOOST_REQUIRE(hidden.result.status == SMSO::OK);
+  BOOST_TEST(hidden.result.bound_met);
+  check_valid(hidden);
+
+  auto vis = hidden.sm.add_property_map<edge_descriptor, double>("e:vis", 0.).first;
+  SMSO::edge_visibility(hidden.sm, vis);
+  // same mesh file, same edge order: the plain run's seams measured with the same visibility
+  auto plain_seam = hidden.sm.add_property_map<edge_descriptor, bool>("e:plain_seam", false).first;
+  for(edge_descriptor e : plain.sm.edges()) plain_seam[e] = plain.seam[e];
+  const double share_plain = SMSO::seam_share_on_most_visible_edges(hidden.sm, vis, plain_seam);
+  const double share_hidden = SMSO::seam_share_on_most_visible_edges(hidden.sm, vis, hidden.seam);
+  BOOST_TEST_MESSAGE("cat: visible share " << share_plain << " -> " << share_hidden << ", E_se "
+                     << plain.result.seam_length_normalized << " -> " << hidden.result.seam_length_normalized);
+  BOOST_TEST(share_plain > 0.);
+  BOOST_TEST(share_hidden <= 0.5 * share_plain);
+  BOOST_TEST(hidden.result.seam_length_normalized <= 1.3 * plain.result.seam_length_normalized);
 }

@@ -18,7 +18,7 @@ current state of the run:
 <tr><td>`iterations`</td><td>Newton iterations so far (at the end, the `iterations` of the result)</td></tr>
 <tr><td>`topology_operations`</td><td>splits and merges applied so far, those of fracture propagation included</td></tr>
 <tr><td>`distortion`</td><td>the current value of the distortion energy of the descent: \f$ E_{SD} \f$ with the default `energy`</td></tr>
-<tr><td>`seam_length_normalized`</td><td>the current normalized seam length \f$ E_{seam} \f$ (3D lengths, without the weights of `edge_seam_weight_map`)</td></tr>
+<tr><td>`seam_length_normalized`</td><td>the current normalized seam length \f$ E_{seam} \f$ (3D lengths, without the seam costs of `seam_cost_map` and `vertex_seam_cost_map`)</td></tr>
 <tr><td>`lambda`</td><td>the current seam weight \f$ \lambda \f$ of \f$ E_w = (1 - \lambda) E_{SD} + \lambda E_{seam} \f$</td></tr>
 <tr><td>`seconds`</td><td>wall-clock seconds since the alternating optimization started (after the copy of the mesh and the initial map)</td></tr>
 </table>

@@ -48,6 +48,10 @@ struct Optimization_result
   double initial_distortion = std::numeric_limits<double>::infinity();
   double seam_length = 0;           ///< 3D length of the seam edges, each once
   double seam_length_normalized = 0;///< seam_length / sqrt(area / pi)
+  /// the seam term \f$ E_{seam} \f$ as optimized: each seam edge's length times its seam cost
+  /// (`seam_cost_map`, `vertex_seam_cost_map`), over sqrt(area / pi); equal to
+  /// `seam_length_normalized` without seam costs
+  double weighted_seam_length_normalized = 0;
   double lambda = 0;                ///< final seam weight of E_w
   std::size_t charts = 0;
   std::size_t iterations = 0;       ///< Newton iterations

@@ -131,7 +131,7 @@ public:
     r.message = m_message;
     if(!m_core) return r;
     if(!has_result(m_status)) return r;
-    internal::measure_result(m_cm, m_energy, m_settings.distortion_bound, r);
+    internal::measure_result(m_cm, m_energy, m_settings.distortion_bound, r, &m_weight);
     r.initial_distortion = m_initial_distortion;
     r.lambda = m_core->lambda();
     r.iterations = m_core->iterations();

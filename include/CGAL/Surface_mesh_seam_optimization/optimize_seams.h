@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
+#include <CGAL/Surface_mesh_seam_optimization/seam_costs.h>
 
 #include <cmath>
 #include <functional>
@@ -56,10 +57,22 @@ namespace Surface_mesh_seam_optimization {
 ///       as key type and `bool` as value type}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{edge_seam_weight_map}
-///     \cgalParamDescription{`edge_descriptor -> double` multiplying each edge's seam cost
-///       (> 1 repels seams, < 1 attracts them)}
+///   \cgalParamNBegin{seam_cost_map}
+///     \cgalParamDescription{regional seam preferences: `edge_descriptor -> double` (>= 0) multiplying each edge's
+///       length in the seam term E_se, which the topology steps and the dual step optimize (> 1 repels seams,
+///       < 1 attracts them, 0 makes them free); `Optimization_result::weighted_seam_length_normalized` reports
+///       the weighted term, `seam_length_normalized` the plain one. A negative or non-finite value gives
+///       `ERROR_WRONG_PARAMETER`. `edge_seam_weight_map`, the package's former name, is a deprecated alias,
+///       read when `seam_cost_map` is not given}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and a value type convertible to `double`}
+///     \cgalParamDefault{all 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_seam_cost_map}
+///     \cgalParamDescription{the per-vertex form of `seam_cost_map`: an edge's cost is the mean of its two
+///       vertices' (multiplied by its `seam_cost_map` value when both are given); `region_seam_costs()` makes
+///       one from a painted region of vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
 ///       as key type and a value type convertible to `double`}
 ///     \cgalParamDefault{all 1}
 ///   \cgalParamNEnd

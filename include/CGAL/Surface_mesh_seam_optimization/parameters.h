@@ -46,6 +46,10 @@
   X(energy, object)                           \
   X(maximum_number_of_iterations, count)      \
   X(edge_seam_weight_map, map)                \
+  X(seam_cost_map, map)                       \
+  X(vertex_seam_cost_map, map)                \
+  X(number_of_rays, count)                    \
+  X(visibility_cost_ratio, number)            \
   X(gradient_tolerance, number)               \
   X(number_of_recut_rounds, count)            \
   X(time_limit, number)                       \

@@ -21,15 +21,19 @@ namespace Surface_mesh_seam_optimization {
 namespace internal {
 
 // Fills the figures of `r` (E_SD, seams, charts) from the core mesh; the
-// bound is judged as judged_distortion() says for `energy`.
+// bound is judged as judged_distortion() says for `energy`. `seam_cost`: the
+// per-corner seam costs, if any.
 template <typename Energy>
-void measure_result(const Cut_mesh& cm, const Energy& energy, double bound, Optimization_result& r)
+void measure_result(const Cut_mesh& cm, const Energy& energy, double bound, Optimization_result& r,
+                    const std::vector<double>* seam_cost = nullptr)
 {
   r.distortion = total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
   r.distortion_at_optimal_scale = symmetric_dirichlet_at_optimal_scale(cm, cm.uv.data(), &r.optimal_scale);
   r.bound_met = judged_distortion(cm, energy, cm.uv.data()) <= bound;
   r.seam_length = cm.seam_length();
   r.seam_length_normalized = r.seam_length / cm.normalization_radius();
+  r.weighted_seam_length_normalized =
+    seam_cost ? cm.seam_length(seam_cost) / cm.normalization_radius() : r.seam_length_normalized;
   std::vector<int> chart;
   r.charts = cm.compute_charts(chart);
   r.overlapping_triangle_pairs = count_overlapping_pairs(cm);

@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Initialize_cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Seam_costs.h>
 
 #include <cmath>
 #include <cstddef>
@@ -75,20 +76,8 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   Error_code ec = initialize_cut_mesh(tm, uvmap, np, cm, copy, message);
   if(ec != OK) return ec;
 
-  weight.assign(cm.corner_vertex.size(), 1.);
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
-  {
-    auto wmap = get_parameter(np, internal_np::edge_seam_weight_map);
-    for(std::size_t h = 0; h < weight.size(); ++h)
-    {
-      weight[h] = double(get(wmap, edge(copy.corner_halfedge[h], tm)));
-      if(!(weight[h] >= 0) || !std::isfinite(weight[h]))
-      {
-        message = "edge_seam_weight_map has a negative or non-finite weight";
-        return ERROR_WRONG_PARAMETER;
-      }
-    }
-  }
+  if(!read_seam_costs(tm, copy, np, weight, message))
+    return ERROR_WRONG_PARAMETER;
   rescale_to_optimal(cm, energy);
   return OK;
 }
