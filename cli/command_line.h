@@ -106,6 +106,7 @@ struct Options
   std::string seam_weights;               // --seam-weights FILE; empty: every edge costs 1
   double region_seam_cost = default_region_seam_cost; // the W of FILE:W (a region's cost)
   bool has_region_seam_cost = false;
+  SMSO::Cut_strategy cut_strategy = SMSO::OPTCUTS; // --cut-strategy
   bool hide_seams = false;                // seam costs from visibility (SMSO::visibility_seam_costs)
   bool measure_visibility = false;        // report the seams' share on the most visible edges
 
@@ -195,6 +196,12 @@ inline void print_help(std::ostream& os)
      << "                          costs w; '#' comments; others cost 1. The report gives the\n"
      << "                          weighted seam length too (default: none; not with\n"
      << "                          --keep-seams or --repair)\n"
+     << "  --cut-strategy NAME     optcuts, or ebcuts: the baseline of the OptCuts paper's\n"
+     << "                          comparison, cuts grown one by one from the vertex of largest\n"
+     << "                          distortion to the nearest seam or border, the distortion\n"
+     << "                          minimized in between (no scaffold: may overlap), until the\n"
+     << "                          bound is met (default: optcuts; ebcuts not with --keep-seams\n"
+     << "                          or --seam-weight)\n"
      << "  --hide-seams            move seams to where they show least: each edge's seam cost\n"
      << "                          grows with its visibility (ambient occlusion by ray\n"
      << "                          casting, and concave creases), from 1 for the least visible\n"
@@ -293,7 +300,8 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
                           "hide-seams", "measure-visibility"})
     recognized.add_options()(name, "");
   for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
-                          "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights"})
+                          "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights",
+                          "cut-strategy"})
     recognized.add_options()(name, po::value<std::string>(), "");
   recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
   po::positional_options_description positional;
@@ -458,6 +466,18 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
                  &options.has_seam_weight))
         return Parse_status::ERROR;
     }
+    else if(key == "--cut-strategy")
+    {
+      std::string s;
+      if(!take_value(s))
+        return Parse_status::ERROR;
+      if(s != "optcuts" && s != "ebcuts")
+      {
+        error = "option '--cut-strategy' needs optcuts or ebcuts, not '" + s + "'";
+        return Parse_status::ERROR;
+      }
+      options.cut_strategy = s == "ebcuts" ? SMSO::EBCUTS : SMSO::OPTCUTS;
+    }
     else if(key == "--seam-weights")
     {
       std::string s;
@@ -513,6 +533,12 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
   if(!(2 * options.margin < options.texture_size))
   {
     error = "option '--margin' must be less than half of the texture size";
+    return Parse_status::ERROR;
+  }
+  if(options.cut_strategy == SMSO::EBCUTS && (options.keep_seams || options.has_seam_weight))
+  {
+    error = std::string("option '--cut-strategy ebcuts' cuts to the bound: not with '") +
+            (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
     return Parse_status::ERROR;
   }
   if(options.hide_seams && options.keep_seams)

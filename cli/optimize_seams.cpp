@@ -72,6 +72,7 @@ struct Run_report
   double seam_weight = 0;                               // seam-weight mode only
   std::string seam_weights;                             // --seam-weights FILE
   bool hide_seams = false;
+  SMSO::Cut_strategy cut_strategy = SMSO::OPTCUTS;
   double visible_seam_share = std::numeric_limits<double>::quiet_NaN(); // measured: null otherwise
   std::vector<std::string> notes;                       // also printed on stderr (unless --quiet)
   bool normalized = false;                              // --normalize applied to the written UVs
@@ -154,6 +155,7 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("weighted_seam_length_normalized", json_number(res.weighted_seam_length_normalized));
   fields.emplace_back("seam_weights", r.seam_weights.empty() ? "null" : str(r.seam_weights));
   fields.emplace_back("hide_seams", r.hide_seams ? "true" : "false");
+  fields.emplace_back("cut_strategy", str(r.cut_strategy == SMSO::EBCUTS ? "ebcuts" : "optcuts"));
   fields.emplace_back("visible_seam_share", ran ? json_number(r.visible_seam_share) : "null");
   fields.emplace_back("charts", std::to_string(res.charts));
   fields.emplace_back("iterations", std::to_string(res.iterations));
@@ -417,6 +419,7 @@ int run(const Options& options)
   report.repair = options.repair;
   report.seam_weights = options.seam_weights;
   report.hide_seams = options.hide_seams;
+  report.cut_strategy = options.cut_strategy;
 
 #ifdef CGAL_LINKED_WITH_TBB
   // Caps TBB's workers for the whole run (the parallel candidate scoring).
@@ -479,6 +482,7 @@ int run(const Options& options)
   request.bijective = !options.no_bijectivity;
   request.iteration_cap = options.iteration_cap();
   request.recut_rounds = int(options.recut_rounds);
+  request.cut_strategy = options.cut_strategy;
   request.time_limit = options.time_limit;
   request.vertex_seam_cost = mesh.add_property_map<vertex_descriptor, double>("v:smso_seam_cost", 1.).first;
   request.edge_seam_cost = mesh.add_property_map<edge_descriptor, double>("e:smso_seam_cost", 1.).first;

@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 
+#include <CGAL/Surface_mesh_seam_optimization/Cut_strategy.h>
+
 #include <cstddef>
 #include <functional>
 
@@ -56,6 +58,7 @@ struct Optimization_request
   int recut_rounds = SMSO::internal::default_number_of_recut_rounds;  // DISTORTION_BOUND only
   double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
   // Seam costs (vertex_seam_cost_map, seam_cost_map; all 1 without --seam-weights). Not in KEEP_SEAMS.
+  SMSO::Cut_strategy cut_strategy = SMSO::OPTCUTS; // DISTORTION_BOUND only
   Vertex_cost_map vertex_seam_cost;
   Edge_cost_map edge_seam_cost;
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.

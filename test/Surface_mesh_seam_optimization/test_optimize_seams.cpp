@@ -880,3 +880,33 @@ BOOST_AUTO_TEST_CASE(visibility_costs_hide_the_seams)
   BOOST_TEST(share_hidden <= 0.5 * share_plain);
   BOOST_TEST(hidden.result.seam_length_normalized <= 1.3 * plain.result.seam_length_normalized);
 }
+// ---------------------------------------------------------------------------
+// The EBCuts baseline (cut_strategy(EBCUTS))
+
+// Cuts grown from the worst vertex to the boundary until the bound holds: a
+// valid cut (one disk chart, seams = UV discontinuities) meeting the bound,
+// with longer seams than OptCuts' on cat_f1500, as the paper reports.
+BOOST_AUTO_TEST_CASE(ebcuts_meets_the_bound_with_longer_seams)
+{
+  Run optcuts, ebcuts;
+  run("cat_f1500.obj", optcuts, SMSO_np::distortion_bound(4.1));
+  run("cat_f1500.obj", ebcuts, SMSO_np::cut_strategy(SMSO::EBCUTS));
+  BOOST_REQUIRE(ebcuts.result.status == SMSO::OK);
+  BOOST_TEST(ebcuts.result.bound_met);
+  BOOST_TEST(ebcuts.result.distortion <= 4.1);
+  BOOST_TEST(ebcuts.result.topology_operations >= 1u); // the cuts
+  check_valid(ebcuts);
+  BOOST_TEST(ebcuts.result.seam_length_normalized > optcuts.result.seam_length_normalized);
+
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", sm));
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(7, 7)).first;
+  const auto with_weight = SMSO::optimize_seams(sm, uv, SMSO_np::cut_strategy(SMSO::EBCUTS).seam_weight(0.1));
+  BOOST_TEST(with_weight.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(with_weight.message.find("EBCUTS") != std::string::npos);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::cut_strategy(SMSO::EBCUTS).distortion_bound(3.)).status ==
+             SMSO::ERROR_WRONG_PARAMETER);
+  bool untouched = true;
+  for(halfedge_descriptor h : sm.halfedges()) untouched = untouched && uv[h] == Point_2(7, 7);
+  BOOST_TEST(untouched);
+}

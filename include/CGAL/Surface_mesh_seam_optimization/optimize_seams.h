@@ -5,7 +5,9 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_OPTIMIZE_SEAMS_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+#include <CGAL/Surface_mesh_seam_optimization/Cut_strategy.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Extremity_cuts.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_costs.h>
 
@@ -128,6 +130,14 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamType{`int` (any integral type)}
 ///     \cgalParamDefault{`6`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{cut_strategy}
+///     \cgalParamDescription{`OPTCUTS`, or `EBCUTS`, the baseline of the OptCuts paper's comparison: cuts grown
+///       one at a time from the vertex of largest distortion to the nearest seam or border along a shortest
+///       path, the distortion minimized with the seams fixed in between (no scaffold), until the bound is met;
+///       `topology_operations` counts the cuts. Not with `seam_weight` or `texture_size`}
+///     \cgalParamType{`Cut_strategy`}
+///     \cgalParamDefault{`OPTCUTS`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{time_limit}
 ///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
 ///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
@@ -173,6 +183,30 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   {
     result.status = internal::check_packing_settings(packing, result.message);
     if(result.status != OK) return result;
+  }
+
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::cut_strategy_t>::value)
+  {
+    if(get_parameter(np, internal_np::cut_strategy) == EBCUTS)
+    {
+      const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+      const double bound =
+        choose_parameter(get_parameter(np, internal_np::distortion_bound), internal::default_distortion_bound);
+      if(!(bound > 4.) || !std::isfinite(bound))
+      {
+        result.message = "distortion_bound must be a finite number > 4";
+        return result;
+      }
+      if(pack || !parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+      {
+        result.message = "cut_strategy EBCUTS takes no seam_weight or texture_size";
+        return result;
+      }
+      if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+        return internal::extremity_cuts(tm, uvmap, get_parameter(np, internal_np::edge_is_seam_map), np, energy, bound);
+      else
+        return internal::extremity_cuts(tm, uvmap, get(CGAL::dynamic_edge_property_t<bool>(), tm), np, energy, bound);
+    }
   }
 
   typedef std::remove_reference_t<decltype(visitor)> Visitor;

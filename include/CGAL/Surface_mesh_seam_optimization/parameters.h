@@ -36,7 +36,8 @@
 
 // The package's parameters and the kind of value each takes (checked at
 // compile time): `flag` a bool, `number` an arithmetic type, `count` an
-// integral type, `object` a class, `map` anything (a property map).
+// integral type, `object` a class, `map` anything (a property map),
+// `enumerator` an enum value.
 #define CGAL_SMSO_FOR_EACH_NAMED_PARAMETER(X) \
   X(distortion_bound, number)                 \
   X(seam_weight, number)                      \
@@ -50,6 +51,7 @@
   X(vertex_seam_cost_map, map)                \
   X(number_of_rays, count)                    \
   X(visibility_cost_ratio, number)            \
+  X(cut_strategy, enumerator)                 \
   X(gradient_tolerance, number)               \
   X(number_of_recut_rounds, count)            \
   X(time_limit, number)                       \
@@ -79,12 +81,15 @@ template <typename T>
 struct Accepts_object : std::is_class<T> {};
 template <typename T>
 struct Accepts_map : std::true_type {};
+template <typename T>
+struct Accepts_enumerator : std::is_enum<T> {};
 
 #define CGAL_SMSO_EXPECTS_flag "the value must be a bool"
 #define CGAL_SMSO_EXPECTS_number "the value must be a number (an arithmetic type other than bool)"
 #define CGAL_SMSO_EXPECTS_count "the value must be an integer (an integral type other than bool)"
 #define CGAL_SMSO_EXPECTS_object "the value must be an object (a model of DistortionEnergy)"
 #define CGAL_SMSO_EXPECTS_map ""
+#define CGAL_SMSO_EXPECTS_enumerator "the value must be an enumerator (Cut_strategy)"
 
 // Value_check<Tag, T>: true, or a static_assert naming the parameter. CGAL's
 // own parameters are not checked (CGAL does not either).
@@ -106,6 +111,7 @@ CGAL_SMSO_FOR_EACH_NAMED_PARAMETER(CGAL_SMSO_VALUE_CHECK)
 #undef CGAL_SMSO_EXPECTS_count
 #undef CGAL_SMSO_EXPECTS_object
 #undef CGAL_SMSO_EXPECTS_map
+#undef CGAL_SMSO_EXPECTS_enumerator
 
 } // namespace internal
 
