@@ -52,6 +52,7 @@ struct Optimization_request
   bool bijective = true;
   std::size_t iteration_cap = 0;
   int recut_rounds = SMSO::internal::default_number_of_recut_rounds;  // DISTORTION_BOUND only
+  int starts = SMSO::internal::default_number_of_starts;              // DISTORTION_BOUND only
   double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
   // Called by the library's visitor (not in KEEP_SEAMS); false cancels the run.
   std::function<bool(const SMSO::Seam_optimization_progress&)> progress;

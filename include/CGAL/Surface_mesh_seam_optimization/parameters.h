@@ -48,6 +48,7 @@
   X(edge_seam_weight_map, map)                \
   X(gradient_tolerance, number)               \
   X(number_of_recut_rounds, count)            \
+  X(number_of_starts, count)                  \
   X(time_limit, number)                       \
   X(texture_size, number)                     \
   X(margin, number)                           \
