@@ -103,14 +103,19 @@ BOOST_AUTO_TEST_CASE(the_bound_is_met_on_small_meshes)
     BOOST_TEST(r.result.distortion <= 4.1);
     BOOST_TEST(r.result.distortion < r.result.initial_distortion);
     BOOST_TEST(r.result.topology_operations > 0u);
-    // the phases add up to most of the wall time, and each was timed
+    // each phase was timed (the timings are the kept start's, the seconds
+    // those of the call, which waits for both starts)
     const SMSO::Optimization_timings& t = r.result.timings;
     BOOST_TEST(t.assembly > 0); BOOST_TEST(t.factorization > 0); BOOST_TEST(t.symbolic_analysis > 0);
     BOOST_TEST(t.line_search > 0); BOOST_TEST(t.topology > 0); BOOST_TEST(t.scaffold > 0);
     BOOST_TEST(t.total() <= r.result.seconds);
-    BOOST_TEST(t.total() >= 0.5 * r.result.seconds);
     check_valid(r);
   }
+  // with one start, the phases add up to most of the wall time
+  Run one;
+  run("cat_f1500.obj", one, SMSO_np::number_of_starts(1));
+  BOOST_TEST(one.result.timings.total() <= one.result.seconds);
+  BOOST_TEST(one.result.timings.total() >= 0.5 * one.result.seconds);
 }
 
 // The library's flat cut mesh of a run's result: seams where the UVs disagree.
@@ -425,7 +430,9 @@ BOOST_AUTO_TEST_CASE(the_scaffold_waits_until_charts_overlap)
 BOOST_AUTO_TEST_CASE(a_disk_starts_over_with_its_scaffold_at_the_first_overlap)
 {
   // planck_s1 is a disk whose free run overlaps: the bijective run goes back
-  // to the initial map (no seam) once, and on with the scaffold from there.
+  // to the initial map (no seam) once, and on with the scaffold from there
+  // (one start: the second start's seams, kept by default, never overlap).
+  const auto one = SMSO_np::number_of_starts(1);
   struct Seam_visitor : SMSO::Default_seam_optimization_visitor
   {
     std::size_t restarts = 0;
@@ -438,9 +445,11 @@ BOOST_AUTO_TEST_CASE(a_disk_starts_over_with_its_scaffold_at_the_first_overlap)
     }
   } free_visitor, bijective_visitor;
   Run free_run, bijective_run;
-  run("planck_s1.obj", free_run, SMSO_np::combine(SMSO_np::bijective(false), CGAL::parameters::visitor(std::ref(free_visitor))),
+  run("planck_s1.obj", free_run,
+      SMSO_np::combine(one, SMSO_np::bijective(false), CGAL::parameters::visitor(std::ref(free_visitor))),
       SMSO_TEST_DATA_DIR);
-  run("planck_s1.obj", bijective_run, CGAL::parameters::visitor(std::ref(bijective_visitor)), SMSO_TEST_DATA_DIR);
+  run("planck_s1.obj", bijective_run, SMSO_np::combine(one, CGAL::parameters::visitor(std::ref(bijective_visitor))),
+      SMSO_TEST_DATA_DIR);
   BOOST_TEST(free_run.result.overlapping_triangle_pairs > 0u);
   BOOST_TEST(free_visitor.restarts == 0u);
   BOOST_TEST(bijective_visitor.restarts == 1u);

@@ -85,6 +85,8 @@ struct Seam_optimizer_access
 /// the user's maps), `step()` performs one alternation (descent to a
 /// stationary point, dual update, topology operation), `run()` goes to the
 /// end, and `write_uv_map()` / `write_seam_map()` write the current result.
+/// It runs one start, with OptCuts' dual step: the result of
+/// `optimize_seams()` with `number_of_starts(1)`.
 ///
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam Energy a model of `DistortionEnergy`

@@ -196,9 +196,9 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
   Visitor first_visitor(&visitor, stop), second_visitor(nullptr, stop);
   // one place runs the optimization and fills the result: Seam_optimizer
   std::unique_ptr<Optimizer> first = Access::set_up<Optimizer>(tm, uvmap, first_visitor, np);
-  // Bound mode: a second start, whose dual step holds the seam price while a
-  // cut pays, from the same setup; its seams are shorter on some meshes,
-  // longer on others (issue 19), so the shorter feasible result is kept.
+  // Bound mode: a second start from the same setup, whose dual step holds the
+  // price of distortion while a cut pays at it; its seams are shorter on some
+  // meshes, longer on others (issue 19), so the shorter feasible result is kept.
   constexpr bool bound_mode = parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
   // Copies of solver traits share their solver (as CGAL's do): the second
   // start gets a solver of its own, but for a solver the user gave, a copy,
