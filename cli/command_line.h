@@ -40,6 +40,7 @@ const std::size_t default_max_iterations_seams = SMSO::internal::default_number_
 const std::size_t default_max_iterations_keep =
   SMSO::internal::default_number_of_iterations_distortion_only;                                     // minimize_distortion()
 const std::size_t default_recut_rounds = std::size_t(SMSO::internal::default_number_of_recut_rounds);
+const std::size_t default_starts = std::size_t(SMSO::internal::default_number_of_starts);
 const double default_distortion_bound = SMSO::internal::default_distortion_bound;
 const double default_texture_size = SMSO::internal::Packing_settings().texture_size;
 const double default_margin = SMSO::internal::Packing_settings().margin;
@@ -91,6 +92,8 @@ struct Options
   std::size_t max_iterations = 0;         // meaningful only with has_max_iterations
   bool has_recut_rounds = false;
   std::size_t recut_rounds = default_recut_rounds; // bound mode only
+  bool has_starts = false;
+  std::size_t starts = default_starts;    // bound mode only
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool pack = false;                      // charts packed into [0,1]^2 (SMSO::pack_charts)
   double texture_size = default_texture_size; // --pack, --normalize with several charts: texels
@@ -220,6 +223,11 @@ inline void print_help(std::ostream& os)
      << "                          shorter seams; 0 for the first result alone (faster);\n"
      << "                          not with --seam-weight or --keep-seams\n"
      << "                          (default: " << default_recut_rounds << ")\n"
+     << "  --starts N              1 or 2: with 2, a second start whose dual step holds the\n"
+     << "                          price of distortion while a cut pays runs beside the first\n"
+     << "                          (in parallel), and the shorter seams that meet the bound\n"
+     << "                          are kept; 1 for the first alone (half the work); not with\n"
+     << "                          --seam-weight or --keep-seams (default: " << default_starts << ")\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
      << "                          write the best result so far (status WARNING_TIME_LIMIT,\n"
      << "                          exit 0); also with --keep-seams (default: none)\n"
@@ -301,7 +309,7 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     recognized.add_options()(name, "");
   for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
                           "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights",
-                          "cut-strategy"})
+                          "cut-strategy", "starts"})
     recognized.add_options()(name, po::value<std::string>(), "");
   recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
   po::positional_options_description positional;
@@ -502,6 +510,11 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
                  &options.has_recut_rounds))
         return Parse_status::ERROR;
     }
+    else if(key == "--starts")
+    {
+      if(!number(options.starts, [](std::size_t n) { return n == 1 || n == 2; }, "1 or 2", &options.has_starts))
+        return Parse_status::ERROR;
+    }
     else
     {
       error = "unknown option '" + arg + "'";
@@ -522,6 +535,12 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
   if(options.has_recut_rounds && (options.keep_seams || options.has_seam_weight))
   {
     error = std::string("option '--recut-rounds' applies to the distortion bound, not to '") +
+            (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.has_starts && (options.keep_seams || options.has_seam_weight))
+  {
+    error = std::string("option '--starts' applies to the distortion bound, not to '") +
             (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
     return Parse_status::ERROR;
   }

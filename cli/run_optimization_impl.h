@@ -57,7 +57,8 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
   return SMSO::optimize_seams(mesh, uvmap,
                               with_visitor.distortion_bound(request.distortion_bound)
                                 .number_of_recut_rounds(request.recut_rounds)
-                                .cut_strategy(request.cut_strategy));
+                                .cut_strategy(request.cut_strategy)
+                                .number_of_starts(request.starts));
 }
 
 } // namespace optimize_seams_cli

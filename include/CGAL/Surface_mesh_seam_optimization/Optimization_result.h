@@ -60,6 +60,9 @@ struct Optimization_result
   std::size_t overlapping_triangle_pairs = 0; ///< checked on the result, whether `bijective` was asked for or not
   bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
+  /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts' dual
+  /// step), 1 the second; the other figures are those of that start
+  std::size_t start = 0;
   double seconds = 0;
   Optimization_timings timings;     ///< where the seconds went
 

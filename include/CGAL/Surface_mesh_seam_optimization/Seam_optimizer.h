@@ -13,6 +13,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,11 +23,57 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+// Tag of the constructor that sets nothing up (see Seam_optimizer_access).
+struct Not_set_up {};
+
 // What optimize_seams() needs of a Seam_optimizer beyond its public interface.
 struct Seam_optimizer_access
 {
   template <typename Optimizer>
   static Cut_mesh& cut_mesh(Optimizer& o) { return o.m_cm; }
+
+  // the (weighted) seam cost that bound mode minimizes
+  template <typename Optimizer>
+  static double seam_cost(const Optimizer& o)
+  {
+    return o.m_core ? o.m_core->seam_cost() : std::numeric_limits<double>::infinity();
+  }
+
+  // The input checked and the initial map computed, but the first descent
+  // not run (begin() runs it): several starts then share this setup.
+  template <typename Optimizer, typename TriangleMesh, typename UVMap, typename Visitor, typename NamedParameters>
+  static std::unique_ptr<Optimizer> set_up(const TriangleMesh& tm, UVMap uvmap, Visitor& visitor,
+                                           const NamedParameters& np)
+  {
+    std::unique_ptr<Optimizer> o(new Optimizer(Not_set_up(), tm, visitor));
+    o->set_up(uvmap, np);
+    return o;
+  }
+
+  // Another start from the setup of `o` (not begun): its own copy of the
+  // data, its own visitor, solver and dual-step rule. (Copies of solver
+  // traits share their solver, as CGAL's do: `solver` is a fresh one.)
+  template <typename Optimizer, typename Visitor, typename SolverTraits>
+  static std::unique_ptr<Optimizer> copy_setup(const Optimizer& o, Visitor& visitor, const SolverTraits& solver,
+                                               Dual_step_rule rule)
+  {
+    std::unique_ptr<Optimizer> c(new Optimizer(Not_set_up(), o.m_tm, visitor));
+    c->m_timer.start();
+    c->m_energy = o.m_energy;
+    c->m_solver.emplace(solver);
+    c->m_status = o.m_status;
+    c->m_message = o.m_message;
+    c->m_cm = o.m_cm;
+    c->m_copy = o.m_copy;
+    c->m_weight = o.m_weight;
+    c->m_settings = o.m_settings;
+    c->m_settings.dual_step_rule = rule;
+    c->m_initial_distortion = o.m_initial_distortion;
+    return c;
+  }
+
+  template <typename Optimizer>
+  static void begin(Optimizer& o) { o.begin(); }
 };
 
 } // namespace internal
@@ -38,6 +85,8 @@ struct Seam_optimizer_access
 /// the user's maps), `step()` performs one alternation (descent to a
 /// stationary point, dual update, topology operation), `run()` goes to the
 /// end, and `write_uv_map()` / `write_seam_map()` write the current result.
+/// It runs one start, with OptCuts' dual step: the result of
+/// `optimize_seams()` with `number_of_starts(1)`.
 ///
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam Energy a model of `DistortionEnergy`
@@ -76,18 +125,33 @@ public:
   }
 
 private:
+  Seam_optimizer(internal::Not_set_up, const TriangleMesh& tm, Visitor& visitor) : m_tm(tm), m_visitor(&visitor) {}
+
   template <typename UVMap, typename NamedParameters>
   void initialize(UVMap uvmap, const NamedParameters& np)
+  {
+    set_up(uvmap, np);
+    begin();
+  }
+
+  template <typename UVMap, typename NamedParameters>
+  void set_up(UVMap uvmap, const NamedParameters& np)
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     m_timer.start();
     m_energy = choose_parameter(get_parameter(np, internal_np::energy), Energy());
-    const SolverTraits solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), SolverTraits());
+    m_solver.emplace(choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), SolverTraits()));
     m_status = internal::setup_seam_optimization(m_tm, uvmap, np, m_energy, m_cm, m_copy, m_weight, m_settings, m_message);
     if(m_status != OK) return;
     m_initial_distortion = internal::total_energy(m_cm, Symmetric_Dirichlet_energy(), m_cm.uv.data());
-    m_core.reset(new Core(m_cm, m_energy, solver, m_weight, m_settings, *m_visitor));
+  }
+
+  // the first descent
+  void begin()
+  {
+    if(m_status != OK) return;
+    m_core.reset(new Core(m_cm, m_energy, *m_solver, m_weight, m_settings, *m_visitor));
     m_status = m_core->start();
     m_running = (m_status == OK);
     // (the first descent already hit the iteration cap or the time limit)
@@ -179,6 +243,7 @@ private:
   internal::Cut_mesh m_cm;
   internal::Face_graph_copy<TriangleMesh> m_copy;
   std::vector<double> m_weight;
+  std::optional<SolverTraits> m_solver; // (a model need not be default constructible)
   internal::Alternating_settings m_settings;
   std::optional<Visitor> m_own_visitor; // (none when the user gave one)
   Visitor* m_visitor;

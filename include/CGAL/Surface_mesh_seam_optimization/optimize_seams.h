@@ -10,10 +10,14 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Extremity_cuts.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_costs.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 
+#include <atomic>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -138,6 +142,20 @@ namespace Surface_mesh_seam_optimization {
 ///     \cgalParamType{`Cut_strategy`}
 ///     \cgalParamDefault{`OPTCUTS`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_starts}
+///     \cgalParamDescription{bound mode: 2 runs two starts from the same initial map, the first with OptCuts'
+///       dual step and the second with one that holds the price of distortion while some cut already pays at
+///       it, and keeps the result with the shorter (weighted) seams among those that meet the bound (the first
+///       on a tie, or when neither does); they run in parallel when TBB is linked, each with its own
+///       `number_of_iterations` and `time_limit`, and the result does not depend on the number of threads
+///       (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are: the starts
+///       then run one after the other).
+///       1 runs the first alone (half the work, seams longer on some meshes). The visitor is called by the
+///       first start only, from the calling thread; when it stops the run, both starts stop and the first's
+///       result is kept (`Optimization_result::start` says which start the result comes from)}
+///     \cgalParamType{`int` (any integral type), 1 or 2}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{time_limit}
 ///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
 ///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
@@ -209,21 +227,71 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     }
   }
 
-  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  const int starts = choose_parameter(get_parameter(np, internal_np::number_of_starts),
+                                     internal::default_number_of_starts);
+  if(starts < 1 || starts > 2)
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    result.message = "number_of_starts must be 1 or 2";
+    return result;
+  }
+
+  typedef internal::Start_visitor<std::remove_reference_t<decltype(visitor)> > Visitor;
+  typedef Seam_optimizer<TriangleMesh, Energy, Solver, Visitor> Optimizer;
+  typedef internal::Seam_optimizer_access Access;
+  std::atomic<bool> stop(false);
+  Visitor first_visitor(&visitor, stop), second_visitor(nullptr, stop);
   // one place runs the optimization and fills the result: Seam_optimizer
-  Seam_optimizer<TriangleMesh, Energy, Solver, Visitor> optimizer(tm, uvmap, visitor, np);
-  result = optimizer.run();
+  std::unique_ptr<Optimizer> first = Access::set_up<Optimizer>(tm, uvmap, first_visitor, np);
+  // Bound mode: a second start from the same setup, whose dual step holds the
+  // price of distortion while a cut pays at it; its seams are shorter on some
+  // meshes, longer on others (issue 19), so the shorter feasible result is kept.
+  constexpr bool bound_mode = parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
+  // Copies of solver traits share their solver (as CGAL's do): the second
+  // start gets a solver of its own, but for a solver the user gave, a copy,
+  // and then the starts take turns.
+  constexpr bool shared_solver =
+    !parameters::is_default_parameter<NamedParameters, CGAL::internal_np::sparse_linear_solver_t>::value;
+  std::unique_ptr<Optimizer> second;
+  if(bound_mode && starts > 1 && first->status() == OK)
+    second = Access::copy_setup(*first, second_visitor,
+                                choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver()),
+                                internal::HOLD_PRICE_WHILE_PAYING);
+  auto run_first = [&] { Access::begin(*first); first->run(); };
+  auto run_second = [&] { Access::begin(*second); second->run(); };
+  if(second && !shared_solver)
+    internal::run_side_by_side(run_first, run_second, stop);
+  else
+  {
+    run_first();
+    if(second) run_second();
+  }
+
+  // the first start's result, unless the second is feasible and cheaper; after
+  // a stop asked by the user's visitor, the first's (the run the visitor watched)
+  Optimizer* kept = first.get();
+  result = first->result();
+  if(second && !stop.load())
+  {
+    Optimization_result other = second->result();
+    auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
+    if(feasible(other) && (!feasible(result) || Access::seam_cost(*second) < Access::seam_cost(*first)))
+    {
+      kept = second.get();
+      result = std::move(other);
+      result.start = 1;
+    }
+  }
   if(!has_result(result.status)) return result;
   if(pack)
   {
     Chart_packing_result packed;
-    const Error_code ec =
-      internal::pack_cut_mesh(internal::Seam_optimizer_access::cut_mesh(optimizer), packing, packed, result.message);
+    const Error_code ec = internal::pack_cut_mesh(Access::cut_mesh(*kept), packing, packed, result.message);
     if(ec != OK) { result.status = ec; return result; }
   }
-  optimizer.write_uv_map(uvmap);
+  kept->write_uv_map(uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-    optimizer.write_seam_map(get_parameter(np, internal_np::edge_is_seam_map));
+    kept->write_seam_map(get_parameter(np, internal_np::edge_is_seam_map));
   result.seconds = timer.time();
   return result;
 }

@@ -54,6 +54,7 @@
   X(cut_strategy, enumerator)                 \
   X(gradient_tolerance, number)               \
   X(number_of_recut_rounds, count)            \
+  X(number_of_starts, count)                  \
   X(time_limit, number)                       \
   X(texture_size, number)                     \
   X(margin, number)                           \

@@ -12,7 +12,7 @@ for flag in --help -h; do
   [ ! -s err.txt ] || fail "$flag: unexpected stderr: $(cat err.txt)"
   grep -q "^Usage: optimize_seams INPUT" out.txt || fail "$flag: no usage line"
   for opt in -o --output --distortion-bound --seam-weight --no-bijectivity --keep-seams --report \
-             --quiet --max-iterations --recut-rounds --normalize --use-input-uv --time-limit --energy --threads \
+             --quiet --max-iterations --recut-rounds --starts --normalize --use-input-uv --time-limit --energy --threads \
              --repair --svg --png --help; do
     grep -q -- "$opt\b" out.txt || fail "$flag: option $opt is not listed"
   done

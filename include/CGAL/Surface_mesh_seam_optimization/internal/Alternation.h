@@ -68,6 +68,7 @@ struct Alternating_settings
   // bound mode: an interior split (a new slit) must cost this many times less
   // seam per unit of distortion than the best boundary split
   double slit_ratio = 1.5;
+  Dual_step_rule dual_step_rule = RAISE_PRICE; // see Dual_step.h
   bool bijective = false;           // scaffold around the charts
   Newton_settings newton;
 };
@@ -425,7 +426,7 @@ protected:
   // The dual step (see dual_step()), then the visitor; false: nothing can pay, or cancelled.
   bool dual_update(double e_sd, const std::vector<Operation>& ops)
   {
-    if(!dual_step(e_sd, m_settings.distortion_bound, m_settings.kappa, ops, m_lambda)) return false;
+    if(!dual_step(e_sd, m_settings.distortion_bound, m_settings.kappa, ops, m_lambda, m_settings.dual_step_rule)) return false;
     if(!m_visitor.on_lambda_update(progress())) { m_cancelled = true; return false; }
     return true;
   }

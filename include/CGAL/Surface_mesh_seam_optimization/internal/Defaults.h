@@ -24,6 +24,10 @@ constexpr std::size_t default_number_of_iterations_distortion_only = 10000;
 // (named parameter number_of_recut_rounds).
 constexpr int default_number_of_recut_rounds = 6;
 
+// Starts of optimize_seams() in bound mode, each with its own dual-step rule,
+// the shortest feasible result kept (named parameter number_of_starts).
+constexpr int default_number_of_starts = 2;
+
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
 } // namespace CGAL

@@ -16,15 +16,40 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+// How the dual step prices E_SD while above the bound. The two rules lead to
+// different seams, each shorter on some meshes: optimize_seams() runs one
+// start with each and keeps the shorter result (`number_of_starts`).
+enum Dual_step_rule
+{
+  RAISE_PRICE,            // OptCuts: rho grows by kappa (E_SD - bound) at every step
+  HOLD_PRICE_WHILE_PAYING // rho kept while some split already pays at it: the
+                          // cheap cuts are bought before the price climbs
+};
+
 // rho <- max(0, rho + kappa (E_SD - bound)), repeated until one of `ops`
 // (each with the changes d_sd of E_SD and d_se of the seam cost it brings)
 // pays: d_sd rho + d_se < 0, a split while above the bound, a merge while
 // below. Returns false (lambda unchanged) if none can pay at any rho.
+// With HOLD_PRICE_WHILE_PAYING, above the bound, rho stays while some split
+// pays at it, and the step gives up (false) when no split lowers E_SD at a
+// seam cost.
 template <typename OperationRange>
-bool dual_step(double e_sd, double bound, double kappa, const OperationRange& ops, double& lambda)
+bool dual_step(double e_sd, double bound, double kappa, const OperationRange& ops, double& lambda,
+               Dual_step_rule rule = RAISE_PRICE)
 {
   double rho = (1 - lambda) / lambda;
   const double step = kappa * (e_sd - bound);
+  if(rule == HOLD_PRICE_WHILE_PAYING && e_sd > bound)
+  {
+    bool pays = false, can_pay = false;
+    for(const auto& op : ops)
+    {
+      pays = pays || op.d_sd * rho + op.d_se < 0;
+      can_pay = can_pay || (op.d_se > 0 && op.d_sd < 0);
+    }
+    if(pays) return true;
+    if(!can_pay) return false;
+  }
   rho = (std::max)(0., rho + step);
   // rho threshold of each operation: profitable iff (d_sd * rho + d_se) < 0
   double need = std::numeric_limits<double>::infinity();

@@ -1,0 +1,84 @@
+// Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Two starts of optimize_seams() run side by side: the visitor each one
+// calls, and running them (in parallel where TBB is linked).
+
+#ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PARALLEL_STARTS_H
+#define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PARALLEL_STARTS_H
+
+#include <CGAL/Surface_mesh_seam_optimization/Seam_optimization_visitor.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+#endif
+
+#include <atomic>
+
+namespace CGAL {
+namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// The visitor of one start: the user's visitor for the start run on the
+// calling thread (so that it is never called from another thread), none for
+// the others. A stop asked by the user's visitor stops every start.
+template <typename Visitor>
+class Start_visitor
+{
+public:
+  Start_visitor(Visitor* user, std::atomic<bool>& stop) : m_user(user), m_stop(stop) {}
+
+  bool on_iteration(const Seam_optimization_progress& p) { return go(!m_user || m_user->on_iteration(p)); }
+  bool on_topology_operation(const Seam_optimization_progress& p)
+  {
+    return go(!m_user || m_user->on_topology_operation(p));
+  }
+  bool on_lambda_update(const Seam_optimization_progress& p) { return go(!m_user || m_user->on_lambda_update(p)); }
+
+private:
+  bool go(bool user_goes)
+  {
+    if(!user_goes) m_stop.store(true);
+    return user_goes && !m_stop.load();
+  }
+
+  Visitor* m_user;
+  std::atomic<bool>& m_stop;
+};
+
+// Runs first() on the calling thread and second() beside it. Each works on
+// its own data, so the results do not depend on the schedule; without TBB
+// they run one after the other. `stop` is raised if first() throws, so that
+// second() ends soon.
+template <typename First, typename Second>
+void run_side_by_side(const First& first, const Second& second, std::atomic<bool>& stop)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_group group;
+  // isolated: a thread waiting inside one start (its parallel candidate
+  // scoring) takes no work of the other start, which would hold it up
+  group.run([&] { tbb::this_task_arena::isolate(second); });
+  try
+  {
+    tbb::this_task_arena::isolate(first);
+  }
+  catch(...)
+  {
+    stop.store(true);
+    group.wait();
+    throw;
+  }
+  group.wait();
+#else
+  (void)stop;
+  first();
+  second();
+#endif
+}
+
+} // namespace internal
+} // namespace Surface_mesh_seam_optimization
+} // namespace CGAL
+
+#endif
