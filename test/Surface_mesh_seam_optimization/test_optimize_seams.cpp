@@ -898,6 +898,7 @@ BOOST_AUTO_TEST_CASE(visibility_costs_hide_the_seams)
   BOOST_TEST(share_hidden <= 0.5 * share_plain);
   BOOST_TEST(hidden.result.seam_length_normalized <= 1.3 * plain.result.seam_length_normalized);
 }
+
 // ---------------------------------------------------------------------------
 // The EBCuts baseline (cut_strategy(EBCUTS))
 
@@ -927,6 +928,8 @@ BOOST_AUTO_TEST_CASE(ebcuts_meets_the_bound_with_longer_seams)
   bool untouched = true;
   for(halfedge_descriptor h : sm.halfedges()) untouched = untouched && uv[h] == Point_2(7, 7);
   BOOST_TEST(untouched);
+}
+
 // planck_s1 (775 faces): the second start, whose dual step holds the price of
 // distortion while a cut pays, finds shorter seams under the bound than
 // OptCuts' dual step (3.54 against 3.62); the default two starts keep them.
