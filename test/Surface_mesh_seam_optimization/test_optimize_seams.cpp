@@ -751,10 +751,20 @@ BOOST_AUTO_TEST_CASE(unit_seam_costs_change_nothing_and_invalid_ones_are_refused
   }
   BOOST_REQUIRE(ones.result.status == SMSO::OK);
   BOOST_TEST(ones.result.iterations == plain.result.iterations);
-  bool same = true;
+  // the same seams, and the same map up to rounding (bit for bit in Release; the
+  // sanitizer build's -O1 code of the two instantiations may round differently)
+  bool same_seams = true;
+  for(edge_descriptor e : plain.sm.edges()) same_seams = same_seams && plain.seam[e] == ones.seam[e];
+  BOOST_TEST(same_seams);
+  double largest = 0, extent = 0;
   for(halfedge_descriptor h : plain.sm.halfedges())
-    same = same && plain.uv[h] == ones.uv[h];
-  BOOST_TEST(same);
+  {
+    largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(plain.uv[h], ones.uv[h])));
+    extent = (std::max)(extent, std::abs(plain.uv[h].x()) + std::abs(plain.uv[h].y()));
+  }
+  BOOST_TEST(largest <= 1e-9 * extent);
+  BOOST_TEST(ones.result.seam_length_normalized == plain.result.seam_length_normalized,
+             boost::test_tools::tolerance(1e-12));
 
   for(double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
   {
