@@ -21,6 +21,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -50,23 +51,35 @@ inline std::vector<std::array<double, 3> > sphere_directions(std::size_t n)
   return d;
 }
 
-// cost = ratio^q, q the rank of the edge's visibility in [0, 1]
-template <typename TriangleMesh, typename EdgeVisibilityMap, typename EdgeCostMap>
-void seam_costs_from_visibility_ranks(const TriangleMesh& tm, EdgeVisibilityMap visibility, EdgeCostMap cost,
-                                      double ratio)
+// The edges in increasing order of `key` (ties: in the order of edges(tm)).
+template <typename TriangleMesh, typename EdgeKeyMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>
+edges_sorted_by(const TriangleMesh& tm, EdgeKeyMap key)
 {
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
   std::vector<std::pair<double, std::size_t> > order;
   std::vector<edge_descriptor> es;
   for(edge_descriptor e : edges(tm))
   {
-    order.emplace_back(double(get(visibility, e)), es.size());
+    order.emplace_back(double(get(key, e)), es.size());
     es.push_back(e);
   }
   std::sort(order.begin(), order.end());
-  const double last = es.size() > 1 ? double(es.size() - 1) : 1.;
-  for(std::size_t i = 0; i < order.size(); ++i)
-    put(cost, es[order[i].second], std::pow(ratio, double(i) / last));
+  std::vector<edge_descriptor> sorted;
+  sorted.reserve(es.size());
+  for(const auto& o : order) sorted.push_back(es[o.second]);
+  return sorted;
+}
+
+// cost = ratio^q, q the rank of the edge's visibility in [0, 1]
+template <typename TriangleMesh, typename EdgeVisibilityMap, typename EdgeCostMap>
+void seam_costs_from_visibility_ranks(const TriangleMesh& tm, EdgeVisibilityMap visibility, EdgeCostMap cost,
+                                      double ratio)
+{
+  const auto sorted = edges_sorted_by(tm, visibility);
+  const double last = sorted.size() > 1 ? double(sorted.size() - 1) : 1.;
+  for(std::size_t i = 0; i < sorted.size(); ++i)
+    put(cost, sorted[i], std::pow(ratio, double(i) / last));
 }
 
 } // namespace internal
@@ -202,19 +215,14 @@ double seam_share_on_most_visible_edges(const TriangleMesh& tm, EdgeVisibilityMa
   typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, tm));
-  std::vector<std::pair<double, std::size_t> > order;
-  std::vector<edge_descriptor> es;
-  for(edge_descriptor e : edges(tm))
-  {
-    order.emplace_back(-double(get(visibility, e)), es.size());
-    es.push_back(e);
-  }
-  std::sort(order.begin(), order.end());
-  const std::size_t top = std::size_t(std::ceil(fraction * double(es.size())));
+  // most visible first (ties: in the order of edges(tm))
+  const auto sorted = internal::edges_sorted_by(
+    tm, boost::make_function_property_map<edge_descriptor>([&](edge_descriptor e) { return -double(get(visibility, e)); }));
+  const std::size_t top = std::size_t(std::ceil(fraction * double(sorted.size())));
   double all = 0, visible = 0;
-  for(std::size_t i = 0; i < order.size(); ++i)
+  for(std::size_t i = 0; i < sorted.size(); ++i)
   {
-    const edge_descriptor e = es[order[i].second];
+    const edge_descriptor e = sorted[i];
     if(!get(seams, e)) continue;
     const double l = std::sqrt(CGAL::to_double(
       CGAL::squared_distance(get(vpm, source(e, tm)), get(vpm, target(e, tm)))));

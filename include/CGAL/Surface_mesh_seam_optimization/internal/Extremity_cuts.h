@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Optimization_result.h>
 #include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Real_timer.h>
@@ -22,9 +23,7 @@
 
 #include <cmath>
 #include <cstddef>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -47,6 +46,9 @@ bool cut_from_the_worst_vertex(const TriangleMesh& tm, VPM vpm, SeamMap seams, c
   for(vertex_descriptor v : vertices(tm)) { put(index, v, int(vs.size())); vs.push_back(v); }
   const std::size_t n = vs.size();
 
+  // each face's (area, density) once, though three of its corners use it
+  auto face_density = get(CGAL::dynamic_face_property_t<std::pair<double, double> >(), tm);
+  for(auto f : faces(tm)) put(face_density, f, density(f));
   std::vector<char> on_boundary(n, 0);
   std::vector<double> sum(n, 0.), area(n, 0.);
   for(halfedge_descriptor h : halfedges(tm))
@@ -54,7 +56,7 @@ bool cut_from_the_worst_vertex(const TriangleMesh& tm, VPM vpm, SeamMap seams, c
     const int t = get(index, target(h, tm));
     if(is_border_edge(h, tm) || get(seams, edge(h, tm))) on_boundary[t] = 1;
     if(is_border(h, tm)) continue;
-    const std::pair<double, double> d = density(face(h, tm)); // (area, density)
+    const std::pair<double, double> d = get(face_density, face(h, tm));
     sum[t] += d.first * d.second;
     area[t] += d.first;
   }
@@ -68,40 +70,24 @@ bool cut_from_the_worst_vertex(const TriangleMesh& tm, VPM vpm, SeamMap seams, c
     }
   if(worst < 0) return false;
 
-  // Dijkstra from the worst vertex to the first seam or border vertex reached
+  // shortest paths from the worst vertex; the cut ends at the nearest seam or
+  // border vertex (ties: the smallest index), whose path meets no other
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  std::vector<halfedge_descriptor> pred(n, GT::null_halfedge());
-  typedef std::pair<double, int> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-  dist[worst] = 0;
-  queue.emplace(0., worst);
+  std::vector<int> pred(n, -1);
+  dijkstra(std::vector<int>(1, worst), dist,
+           [&](int u, const auto& visit) {
+             for(halfedge_descriptor h : halfedges_around_source(vs[u], tm))
+               visit(get(index, target(h, tm)),
+                     std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, vs[u]), get(vpm, target(h, tm))))), u);
+           },
+           [&](int u, int w, int) { pred[w] = u; });
   int reached = -1;
-  while(!queue.empty())
-  {
-    const Entry top = queue.top();
-    queue.pop();
-    if(top.first > dist[top.second]) continue;
-    if(on_boundary[top.second]) { reached = top.second; break; }
-    const vertex_descriptor u = vs[top.second];
-    for(halfedge_descriptor h : halfedges_around_source(u, tm))
-    {
-      const int w = get(index, target(h, tm));
-      const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, u), get(vpm, target(h, tm)))));
-      if(top.first + l < dist[w])
-      {
-        dist[w] = top.first + l;
-        pred[w] = h;
-        queue.emplace(dist[w], w);
-      }
-    }
-  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(on_boundary[i] && dist[i] < std::numeric_limits<double>::infinity() && (reached < 0 || dist[i] < dist[reached]))
+      reached = int(i);
   if(reached < 0) return false;
-  for(int v = reached; v != worst;)
-  {
-    const halfedge_descriptor h = pred[v];
-    put(seams, edge(h, tm), true);
-    v = get(index, source(h, tm));
-  }
+  for(int v = reached; v != worst; v = pred[v])
+    put(seams, edge(halfedge(vs[pred[v]], vs[v], tm).first, tm), true);
   return true;
 }
 
