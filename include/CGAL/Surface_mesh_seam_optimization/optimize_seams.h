@@ -282,6 +282,11 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
       result.start = 1;
     }
   }
+  // the time limit that cut either start short cut the call short: the kept
+  // result is the best so far, not the one an unlimited call would give
+  if(second && result.status == OK &&
+     (first->status() == WARNING_TIME_LIMIT || second->status() == WARNING_TIME_LIMIT))
+    result.status = WARNING_TIME_LIMIT;
   if(!has_result(result.status)) return result;
   if(pack)
   {
