@@ -12,6 +12,9 @@
 #include "run_optimization.h"
 #include "seam_weights.h"
 
+#include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 
@@ -23,6 +26,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -57,14 +61,27 @@ inline const char* mode_name(Mode m)
 }
 
 // --energy names, in the order of Energy_kind.
-const char* const energy_names[] = {"symmetric_dirichlet", "arap", "mips"};
+const char* const energy_names[] = {"symmetric_dirichlet", "arap", "conformal"};
+// Each energy's minimum and default bound (the library's default_bound()).
+const double energy_minimum[] = {SMSO::Symmetric_Dirichlet_energy::minimum_value(), SMSO::ARAP_energy::minimum_value(),
+                                 SMSO::Conformal_energy::minimum_value()};
+inline double energy_default_bound(Energy_kind e, double area_weight)
+{
+  switch(e)
+  {
+    case Energy_kind::ARAP: return SMSO::ARAP_energy::default_bound();
+    case Energy_kind::MIPS: return SMSO::Conformal_energy(area_weight).default_bound();
+    case Energy_kind::SYMMETRIC_DIRICHLET: break;
+  }
+  return SMSO::Symmetric_Dirichlet_energy::default_bound();
+}
 
 inline const char* energy_name(Energy_kind e) { return energy_names[static_cast<int>(e)]; }
 
 inline bool parse_energy(const std::string& s, Energy_kind& e)
 {
   for(int i = 0; i < 3; ++i)
-    if(s == energy_names[i])
+    if(s == energy_names[i] || (i == 2 && s == "mips")) // "mips": the former name
     {
       e = static_cast<Energy_kind>(i);
       return true;
@@ -102,6 +119,8 @@ struct Options
   bool use_input_uv = false;              // start from the input OBJ's own per-corner UVs
   double time_limit = 0;                  // seconds; 0: none
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  double area_weight = SMSO::Conformal_energy().area_weight(); // --area-weight (conformal only)
+  bool has_area_weight = false;
   std::size_t threads = 0;                // 0: TBB's default (all cores)
   bool repair = false;                    // repair the input instead of refusing it
   std::string svg;                        // empty: no UV layout picture
@@ -113,6 +132,11 @@ struct Options
   bool hide_seams = false;                // seam costs from visibility (SMSO::visibility_seam_costs)
   bool measure_visibility = false;        // report the seams' share on the most visible edges
 
+  // --distortion-bound, or the energy's default
+  double bound() const
+  {
+    return has_distortion_bound ? distortion_bound : energy_default_bound(energy, area_weight);
+  }
   Mode mode() const
   {
     return keep_seams ? Mode::KEEP_SEAMS : has_seam_weight ? Mode::SEAM_WEIGHT : Mode::DISTORTION_BOUND;
@@ -173,9 +197,9 @@ inline void print_help(std::ostream& os)
      << "                          (default: " << default_texture_size << ")\n"
      << "  --margin M              texels between charts and to the border for --pack,\n"
      << "                          >= 0 and < N / 2 (default: " << default_margin << ")\n"
-     << "  --distortion-bound B    bound on E_SD, a number > 4; the seams are made as short\n"
-     << "                          as found while E_SD <= B (default: " << default_distortion_bound
-     << ")\n"
+     << "  --distortion-bound B    bound on the energy (E_SD: a number > 4); the seams are made\n"
+     << "                          as short as found while it is <= B (default: "
+     << default_distortion_bound << ", or the --energy's)\n"
      << "  --seam-weight L         a fixed seam weight lambda in [0, 1) instead of the bound:\n"
      << "                          minimize (1 - L) E_SD + L E_seam, no bound (default: off;\n"
      << "                          not with --distortion-bound)\n"
@@ -187,9 +211,16 @@ inline void print_help(std::ostream& os)
      << "  --keep-seams            keep the input's seams (none for a disk; a closed genus-0\n"
      << "                          mesh is cut by a two-edge slit) and only minimize\n"
      << "                          distortion: the previous distortion-only mode (default: off)\n"
-     << "  --energy NAME           distortion energy the descent minimizes: symmetric_dirichlet,\n"
-     << "                          arap or mips; the bound always applies to E_SD, which the\n"
-     << "                          report gives in all cases (default: symmetric_dirichlet)\n"
+     << "  --energy NAME           distortion energy the run minimizes and bounds, each with its\n"
+     << "                          minimum and default bound: symmetric_dirichlet (E_SD; 4,\n"
+     << "                          4.1), conformal (alias mips: MIPS, angles, plus an area\n"
+     << "                          term weighted --area-weight; 2, 2.025 + 0.025 w) or arap\n"
+     << "                          (0, 0.025); the defaults allow the same small strains. The\n"
+     << "                          report gives energy_value (the bounded figure) and e_sd\n"
+     << "                          (default: symmetric_dirichlet)\n"
+     << "  --area-weight W         weight of the conformal energy's area term, >= 0; 0 leaves\n"
+     << "                          areas free (pure MIPS, written at the scale minimizing E_SD)\n"
+     << "                          (default: 0.01)\n"
      << "  --seam-weights FILE[:W] regional seam preferences: seams cost W times their length\n"
      << "                          on a region of vertices (W > 1 keeps them out, W < 1 draws\n"
      << "                          them in; default W: 1000) or what FILE gives per vertex or\n"
@@ -309,7 +340,7 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     recognized.add_options()(name, "");
   for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
                           "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights",
-                          "cut-strategy", "starts"})
+                          "cut-strategy", "starts", "area-weight"})
     recognized.add_options()(name, po::value<std::string>(), "");
   recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
   po::positional_options_description positional;
@@ -435,7 +466,7 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
         return Parse_status::ERROR;
       if(!parse_energy(s, options.energy))
       {
-        error = "option '--energy' needs symmetric_dirichlet, arap or mips, not '" + s + "'";
+        error = "option '--energy' needs symmetric_dirichlet, conformal (or mips) or arap, not '" + s + "'";
         return Parse_status::ERROR;
       }
     }
@@ -464,8 +495,15 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     }
     else if(key == "--distortion-bound")
     {
-      if(!number(options.distortion_bound, [](double b) { return b > 4.; }, "a number > 4 (4 is an isometry)",
-                 &options.has_distortion_bound))
+      // (checked against the energy's minimum below, once --energy is known)
+      if(!number(options.distortion_bound, [](double) { return true; },
+                 "a number above the energy's minimum (> 4 for E_SD, 4 is an isometry)", &options.has_distortion_bound))
+        return Parse_status::ERROR;
+    }
+    else if(key == "--area-weight")
+    {
+      if(!number(options.area_weight, [](double w) { return w >= 0. && std::isfinite(w); }, "a number >= 0",
+                 &options.has_area_weight))
         return Parse_status::ERROR;
     }
     else if(key == "--seam-weight")
@@ -520,6 +558,21 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
       error = "unknown option '" + arg + "'";
       return Parse_status::ERROR;
     }
+  }
+  if(options.has_distortion_bound && !(options.distortion_bound > energy_minimum[static_cast<int>(options.energy)]))
+  {
+    std::ostringstream s;
+    s << "option '--distortion-bound' needs a number > " << energy_minimum[static_cast<int>(options.energy)]
+      << " (the minimum of " << energy_name(options.energy)
+      << (options.energy == Energy_kind::SYMMETRIC_DIRICHLET ? ": 4 is an isometry" : "") << "), not "
+      << options.distortion_bound;
+    error = s.str();
+    return Parse_status::ERROR;
+  }
+  if(options.has_area_weight && options.energy != Energy_kind::MIPS)
+  {
+    error = "option '--area-weight' weights the area term of '--energy conformal' only";
+    return Parse_status::ERROR;
   }
   if(options.has_distortion_bound && options.has_seam_weight)
   {

@@ -79,6 +79,7 @@ struct Run_report
   bool packed = false;                                  // charts packed (--pack, or --normalize with several)
   double texture_size = 0, margin = 0, fill_rate = 0;   // of the packing
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  double area_weight = 0;  // the conformal energy's
   std::size_t threads = 0;                              // --threads; 0: default
   bool repair = false;                                  // --repair asked
   bool repair_done = false;                             // and reached (the file was read)
@@ -141,9 +142,10 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("e_sd", json_number(res.distortion));
   fields.emplace_back("initial_e_sd", json_number(res.initial_distortion));
   fields.emplace_back("e_sd_optimal_scale", json_number(res.distortion_at_optimal_scale));
+  fields.emplace_back("energy_value", json_number(res.energy_value));
   fields.emplace_back("distortion_bound",
                       r.mode == Mode::DISTORTION_BOUND ? json_number(r.distortion_bound, 15) : "null");
-  // The library's flag (judged at the optimal scale for MIPS); null where
+  // The library's flag (on the run's energy); null where
   // there is no bound (it refers to its default bound in the other modes).
   fields.emplace_back("bound_met", r.mode != Mode::DISTORTION_BOUND || !ran
                                      ? "null"
@@ -172,6 +174,7 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("overlapping_triangle_pairs", !ran ? "null" : std::to_string(res.overlapping_triangle_pairs));
   fields.emplace_back("scaffold_rebuilds", std::to_string(res.scaffold_rebuilds));
   fields.emplace_back("energy", str(energy_name(r.energy)));
+  fields.emplace_back("area_weight", r.energy == Energy_kind::MIPS ? json_number(r.area_weight) : "null");
   fields.emplace_back("threads", r.threads > 0 ? std::to_string(r.threads) : "null");
   if(!r.repair)
     fields.emplace_back("repair", "null");
@@ -414,9 +417,10 @@ int run(const Options& options)
   Run_report report;
   report.input = options.input;
   report.mode = options.mode();
-  report.distortion_bound = options.distortion_bound;
+  report.distortion_bound = options.bound();
   report.seam_weight = options.seam_weight;
   report.energy = options.energy;
+  report.area_weight = options.area_weight;
   report.threads = options.threads;
   report.repair = options.repair;
   report.seam_weights = options.seam_weights;
@@ -473,12 +477,13 @@ int run(const Options& options)
   if(options.use_input_uv)
     SMSO::seams_from_uv_map(mesh, uvmap, seams);
 
-  const char* const progress_label[] = {"E_SD", "E_arap", "E_mips"};
+  const char* const progress_label[] = {"E_SD", "E_arap", "E_conf"};
   Progress_printer progress(!options.quiet, progress_label[static_cast<int>(options.energy)]);
   Optimization_request request;
   request.mode = report.mode;
   request.energy = options.energy;
-  request.distortion_bound = options.distortion_bound;
+  request.area_weight = options.area_weight;
+  request.distortion_bound = options.bound();
   request.seam_weight = options.seam_weight;
   request.use_input_uv = options.use_input_uv;
   request.bijective = !options.no_bijectivity;
@@ -612,7 +617,7 @@ int run(const Options& options)
   caption.title = std::filesystem::path(options.input).filename().string();
   caption.e_sd = res.distortion;
   if(report.mode == Mode::DISTORTION_BOUND)
-    caption.distortion_bound = options.distortion_bound;
+    caption.distortion_bound = options.bound();
   caption.seam_length_normalized = res.seam_length_normalized;
   caption.charts = res.charts;
   if(options.energy != Energy_kind::SYMMETRIC_DIRICHLET)
@@ -656,14 +661,13 @@ int run(const Options& options)
                 << (res.message.empty() ? "" : ": " + res.message) << std::endl;
     std::ostringstream what;
     what << "E_SD " << format_double(res.initial_distortion, 6) << " -> " << format_double(res.distortion, 6);
-    // (a MIPS map's scale is free: its bound is judged at the optimal scale)
     if(std::abs(res.distortion_at_optimal_scale - res.distortion) > 1e-6 * res.distortion)
       what << " (" << format_double(res.distortion_at_optimal_scale, 6) << " at the optimal scale)";
-    if(report.mode == Mode::DISTORTION_BOUND)
-      what << " (bound " << format_double(options.distortion_bound, 6)
-           << (res.bound_met ? ", met)" : ", NOT met)");
+    // the bound is on the run's energy
     if(options.energy != Energy_kind::SYMMETRIC_DIRICHLET)
-      what << ", energy " << energy_name(options.energy);
+      what << ", energy " << energy_name(options.energy) << " " << format_double(res.energy_value, 6);
+    if(report.mode == Mode::DISTORTION_BOUND)
+      what << " (bound " << format_double(options.bound(), 6) << (res.bound_met ? ", met)" : ", NOT met)");
     if(report.mode != Mode::KEEP_SEAMS)
       what << ", lambda " << format_double(res.lambda, 4) << ", " << res.topology_operations
            << " topology operations";

@@ -12,7 +12,7 @@ namespace optimize_seams_cli {
 SMSO::Optimization_result run_mips(Mesh& mesh, UV_map uvmap, Seam_map seams,
                                    const Optimization_request& request)
 {
-  return run_with_energy(mesh, uvmap, seams, request, SMSO::Conformal_energy());
+  return run_with_energy(mesh, uvmap, seams, request, SMSO::Conformal_energy(request.area_weight));
 }
 
 } // namespace optimize_seams_cli

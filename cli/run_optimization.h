@@ -50,6 +50,7 @@ struct Optimization_request
 {
   Mode mode = Mode::DISTORTION_BOUND;
   Energy_kind energy = Energy_kind::SYMMETRIC_DIRICHLET;
+  double area_weight = 0.01;       // Conformal_energy's area term (MIPS only)
   double distortion_bound = SMSO::internal::default_distortion_bound; // DISTORTION_BOUND only
   double seam_weight = 0;          // SEAM_WEIGHT only
   bool use_input_uv = false;       // start from `uvmap` and the seams in `seams`

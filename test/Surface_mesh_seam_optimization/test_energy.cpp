@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Isotropic_energy_eigensystem.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Mesh_energy.h>
 
 #include <Eigen/Dense>
 
@@ -318,7 +319,7 @@ BOOST_AUTO_TEST_CASE(arap_values)
 
 BOOST_AUTO_TEST_CASE(mips_values)
 {
-  const SMSO::Conformal_energy mips;
+  const SMSO::Conformal_energy mips(0.); // pure MIPS
   BOOST_CHECK_EQUAL(mips.value(Eigen::Matrix2d::Identity()), 2.);
   BOOST_CHECK_CLOSE(mips.value(3 * rotation(0.7)), 2., 1e-13);  // scale invariant
   BOOST_CHECK_EQUAL(mips.value(mat(2, 0, 0, 0.5)), 4.25);       // 4 + 1/4
@@ -328,7 +329,18 @@ BOOST_AUTO_TEST_CASE(mips_values)
   BOOST_CHECK_CLOSE(mips.value(5 * J), mips.value(J), 1e-13);
   BOOST_CHECK_CLOSE(mips.value(J), 2.5 / 0.7 + 0.7 / 2.5, 1e-13);
   BOOST_CHECK_EQUAL(SMSO::Conformal_energy::minimum_value(), 2.);
-  BOOST_CHECK_EQUAL(std::string(mips.name()), "mips");
+  BOOST_CHECK_EQUAL(std::string(mips.name()), "conformal");
+  BOOST_TEST(mips.is_scale_invariant());
+
+  // the default adds 0.01 (det + 1/det - 2): zero at unit area, whatever the angles
+  const SMSO::Conformal_energy conformal;
+  BOOST_CHECK_EQUAL(conformal.area_weight(), 0.01);
+  BOOST_TEST(!conformal.is_scale_invariant());
+  BOOST_CHECK_EQUAL(conformal.value(Eigen::Matrix2d::Identity()), 2.);
+  BOOST_CHECK_EQUAL(conformal.value(mat(2, 0, 0, 0.5)), 4.25);                        // det 1
+  BOOST_CHECK_CLOSE(conformal.value(3 * rotation(0.7)), 2 + 0.01 * (9 + 1. / 9 - 2), 1e-13); // det 9
+  BOOST_CHECK_CLOSE(conformal.value(mat(1, 2, 0.5, 3)), 7.125 + 0.01 * 0.5, 1e-13);  // det 2: 2 + 1/2 - 2
+  BOOST_CHECK_CLOSE(SMSO::Conformal_energy(2.).value(J), 2.5 / 0.7 + 0.7 / 2.5 + 2 * (1.75 + 1 / 1.75 - 2), 1e-13);
 }
 
 BOOST_AUTO_TEST_CASE(barrier)
@@ -345,8 +357,40 @@ BOOST_AUTO_TEST_CASE(minimum_at_rotations)
   check_minimum(SMSO::Symmetric_Dirichlet_energy(), 1.);
   check_minimum(SMSO::ARAP_energy(), 1.);
   check_minimum(SMSO::Conformal_energy(), 1.);
-  check_minimum(SMSO::Conformal_energy(), 0.3);
-  check_minimum(SMSO::Conformal_energy(), 4.);
+  check_minimum(SMSO::Conformal_energy(2.), 1.);
+  check_minimum(SMSO::Conformal_energy(0.), 0.3); // every similarity without the area term
+  check_minimum(SMSO::Conformal_energy(0.), 4.);
+}
+
+// The default bounds allow the same small strains: at singular values
+// 1 + e1, 1 + e2, E_SD - 4 ~ 4(e1^2 + e2^2), ARAP ~ e1^2 + e2^2 and the
+// conformal energy minus 2 ~ (e1 - e2)^2 + w (e1 + e2)^2, whose means over
+// independent strains of equal spread are 1/4 and (1 + w)/4 of E_SD - 4:
+// hence 4.1, 0.025 and 2 + 0.025 (1 + w).
+BOOST_AUTO_TEST_CASE(default_bounds_allow_the_same_small_strains)
+{
+  const double e1 = 1e-4, e2 = -3e-4, w = SMSO::Conformal_energy().area_weight();
+  const Eigen::Matrix2d J = mat(1 + e1, 0, 0, 1 + e2);
+  const double sd = SMSO::Symmetric_Dirichlet_energy().value(J) - 4;
+  BOOST_TEST(sd == 4 * (e1 * e1 + e2 * e2), boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(SMSO::ARAP_energy().value(J) == e1 * e1 + e2 * e2, boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(SMSO::Conformal_energy(0.).value(J) - 2 == (e1 - e2) * (e1 - e2), boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(SMSO::Conformal_energy().value(J) - 2 == (e1 - e2) * (e1 - e2) + w * (e1 + e2) * (e1 + e2),
+             boost::test_tools::tolerance(1e-3));
+  const double sd_excess = SMSO::Symmetric_Dirichlet_energy::default_bound() - 4;
+  BOOST_TEST(SMSO::ARAP_energy::default_bound() == sd_excess / 4, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(SMSO::Conformal_energy(0.).default_bound() - 2 == sd_excess / 4, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(SMSO::Conformal_energy().default_bound() - 2 == (1 + w) * sd_excess / 4,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(SMSO::Symmetric_Dirichlet_energy::default_bound() == 4.1);
+  // the E_SD start of a non-barrier energy: the E_SD bound of the same strains
+  BOOST_TEST(SMSO::internal::symmetric_dirichlet_bound_with_same_strains(SMSO::ARAP_energy(), 0.025) == 4.1,
+             boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(SMSO::internal::symmetric_dirichlet_bound_with_same_strains(SMSO::ARAP_energy(), 0.1) == 4.4,
+             boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(!SMSO::internal::is_barrier_energy(SMSO::ARAP_energy()));
+  BOOST_TEST(SMSO::internal::is_barrier_energy(SMSO::Conformal_energy()));
+  BOOST_TEST(SMSO::internal::is_barrier_energy(SMSO::Symmetric_Dirichlet_energy()));
 }
 
 BOOST_AUTO_TEST_CASE(finite_differences)
@@ -354,6 +398,8 @@ BOOST_AUTO_TEST_CASE(finite_differences)
   check_fd(SMSO::Symmetric_Dirichlet_energy());
   check_fd(SMSO::ARAP_energy());
   check_fd(SMSO::Conformal_energy());
+  check_fd(SMSO::Conformal_energy(0.));
+  check_fd(SMSO::Conformal_energy(2.)); // the area term's derivatives, weighted up
 }
 
 // The generic quotients (for energies without a closed form) agree with the
@@ -368,7 +414,9 @@ BOOST_AUTO_TEST_CASE(generic_quotients)
       const double s1 = s * (1 + rel), s2 = s;
       for(const Isotropic_derivatives_2& d : {SMSO::Symmetric_Dirichlet_energy::derivatives(s1, s2),
                                               SMSO::ARAP_energy::derivatives(s1, s2),
-                                              SMSO::Conformal_energy::derivatives(s1, s2)})
+                                              SMSO::Conformal_energy().derivatives(s1, s2),
+                                              SMSO::Conformal_energy(0.).derivatives(s1, s2),
+                                              SMSO::Conformal_energy(2.).derivatives(s1, s2)})
       {
         const double scale = (std::max)({1., std::abs(d.d11), std::abs(d.d12)});
         const double ef = std::abs(SMSO::internal::flip_eigenvalue(s1, s2, d) - d.flip) / scale;
@@ -401,6 +449,7 @@ BOOST_AUTO_TEST_CASE(projection)
   const Projection_counts sd = check_projection(SMSO::Symmetric_Dirichlet_energy());
   const Projection_counts arap = check_projection(SMSO::ARAP_energy());
   check_projection(SMSO::Conformal_energy());
+  check_projection(SMSO::Conformal_energy(2.));
   // Both branches happen for the energies whose Hessian can be definite.
   BOOST_CHECK_GT(sd.psd, 1000);
   BOOST_CHECK_GT(arap.psd, 1000);

@@ -325,13 +325,21 @@ BOOST_AUTO_TEST_CASE(concept_archetypes)
              boost::test_tools::tolerance(1e-6));
   BOOST_TEST(m.distortion == 4., boost::test_tools::tolerance(1e-6));
 
-  // optimize_seams() with all three on the closed cube.
+  // optimize_seams() with all three on the closed cube. The archetype has no
+  // default_bound() (optional in the concept): the bound must then be given.
   Sparse_solver_traits_archetype seam_solver;
   Seam_optimization_visitor_archetype visitor;
   double recomputed = 0;
-  const SMSO::Optimization_result r = run_on_cube(
-    SMSO_np::energy(Distortion_energy_archetype()).sparse_linear_solver(seam_solver).visitor(std::ref(visitor)),
-    recomputed);
+  const SMSO::Optimization_result no_bound =
+    run_on_cube(SMSO_np::energy(Distortion_energy_archetype()).sparse_linear_solver(seam_solver), recomputed);
+  BOOST_TEST(no_bound.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(no_bound.message.find("default_bound") != std::string::npos);
+  BOOST_TEST(seam_solver.factorizations() == 0u);
+  const SMSO::Optimization_result r = run_on_cube(SMSO_np::energy(Distortion_energy_archetype())
+                                                    .distortion_bound(3.1)
+                                                    .sparse_linear_solver(seam_solver)
+                                                    .visitor(std::ref(visitor)),
+                                                  recomputed);
   BOOST_TEST_MESSAGE("archetypes, optimize_seams: " << visitor.iterations << " iterations, "
                      << visitor.topology_operations << " topology operations, " << visitor.lambda_updates
                      << " lambda updates, " << seam_solver.factorizations() << " factorizations");

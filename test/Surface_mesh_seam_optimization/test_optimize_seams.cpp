@@ -10,6 +10,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
@@ -1010,4 +1012,56 @@ BOOST_AUTO_TEST_CASE(a_cancel_stops_both_starts)
   BOOST_TEST(r.result.iterations == visitor.iterations);
   BOOST_TEST(r.result.seconds < 30.); // (the first descent alone takes about 8 s here)
   BOOST_TEST(SMSO::number_of_flipped_triangles(r.sm, r.uv) == 0u);
+}
+
+// ---------------------------------------------------------------------------
+// Energies with their own bound
+
+// The bound is on the run's energy, in its own units, with a default per
+// energy. The conformal run meets 2.02525 with lower angle distortion (pure
+// MIPS) than the E_SD run and no collapsed area; the ARAP run, started from
+// the E_SD run at the bound of the same strains (ARAP is no barrier), meets 0.025.
+BOOST_AUTO_TEST_CASE(each_energy_meets_its_own_default_bound)
+{
+  Run sd, conformal, arap;
+  run("cat_f1500.obj", sd, SMSO_np::distortion_bound(4.1));
+  run("cat_f1500.obj", conformal, SMSO_np::energy(SMSO::Conformal_energy()));
+  run("cat_f1500.obj", arap, SMSO_np::energy(SMSO::ARAP_energy()));
+  const SMSO::Conformal_energy mips(0.);
+  const double sd_angles = SMSO::distortion(sd.sm, sd.uv, SMSO_np::energy(mips));
+  const double conformal_angles = SMSO::distortion(conformal.sm, conformal.uv, SMSO_np::energy(mips));
+  const double conformal_value = SMSO::distortion(conformal.sm, conformal.uv, SMSO_np::energy(SMSO::Conformal_energy()));
+  const double arap_value = SMSO::distortion(arap.sm, arap.uv, SMSO_np::energy(SMSO::ARAP_energy()));
+  BOOST_TEST_MESSAGE("cat: MIPS " << sd_angles << " (E_SD run) vs " << conformal_angles << " (conformal run, E_se "
+                     << conformal.result.seam_length_normalized << ", E_SD " << conformal.result.distortion
+                     << "); ARAP " << arap_value << " (E_SD " << arap.result.distortion << ", E_se "
+                     << arap.result.seam_length_normalized << ")");
+  BOOST_TEST(sd.result.energy_value == sd.result.distortion);
+  for(const Run* r : {&conformal, &arap})
+  {
+    BOOST_TEST(r->result.status == SMSO::OK);
+    BOOST_TEST(r->result.bound_met);
+    BOOST_TEST(SMSO::number_of_flipped_triangles(r->sm, r->uv) == 0u);
+    BOOST_TEST(SMSO::number_of_overlapping_triangle_pairs(r->sm, r->uv) == 0u);
+    check_valid(*r);
+  }
+  BOOST_TEST(std::abs(conformal.result.energy_value - conformal_value) <= 1e-9 * conformal_value);
+  BOOST_TEST(conformal_value <= SMSO::Conformal_energy().default_bound());
+  BOOST_TEST(conformal_angles < sd_angles);
+  BOOST_TEST(conformal.result.distortion < 10.); // the area term keeps areas within a bounded factor
+  BOOST_TEST(std::abs(arap.result.energy_value - arap_value) <= 1e-9 + 1e-9 * arap_value);
+  BOOST_TEST(arap_value <= SMSO::ARAP_energy::default_bound());
+  BOOST_TEST(arap.result.distortion < 4.5);
+  BOOST_TEST(arap.result.charts < 5u); // no detached faces
+
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/bishop_part_f1000.obj", sm));
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const auto low_conformal =
+    SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::Conformal_energy()).distortion_bound(2.));
+  BOOST_TEST(low_conformal.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(low_conformal.message.find("> 2") != std::string::npos);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()).distortion_bound(0.)).status ==
+             SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()).distortion_bound(0.01)).bound_met);
 }

@@ -80,15 +80,22 @@ public:
 
   /*!
   optional: `true` for an energy that does not change when the map is scaled
-  uniformly (`Conformal_energy`). The distortion bound of a result is then
-  judged on E_SD at the map's optimal uniform scale instead of as written.
-  An energy without this member is taken as not scale invariant.
+  uniformly (`Conformal_energy` with `area_weight` 0). Its map is then written
+  at the uniform scale that minimizes E_SD. An energy without this member is
+  taken as not scale invariant.
   */
-  static constexpr bool is_scale_invariant();
+  bool is_scale_invariant() const;
+
+  /*!
+  optional: the distortion bound of `optimize_seams()` when none is given,
+  in the energy's own units, above `minimum_value()`. Without it,
+  `distortion_bound` must be given (else `ERROR_WRONG_PARAMETER`).
+  */
+  double default_bound() const;
 
   /*!
   returns a short lowercase identifier of the energy for logs and output
-  (`"symmetric_dirichlet"`, `"arap"`, `"mips"` for the models of the package).
+  (`"symmetric_dirichlet"`, `"arap"`, `"conformal"` for the models of the package).
   */
   const char* name() const;
 

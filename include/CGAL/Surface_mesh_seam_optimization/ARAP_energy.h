@@ -29,9 +29,11 @@ namespace Surface_mesh_seam_optimization {
 /// or degenerate. For consistency with the other models, the value is
 /// \f$+\infty\f$ for \f$\det(J) \le 0\f$.
 ///
-/// The energy fixes the scale (isometries are its minima), so the
-/// distortion bound is judged on E_SD of the map as it is written
-/// (`Optimization_result::distortion`); a thin triangle makes that large.
+/// The energy fixes the scale (isometries are its minima). A squeezed
+/// triangle costs it at most 2, so from the initial map of a closed mesh no
+/// split pays enough to cut into the squeezed parts: `optimize_seams()`
+/// starts a run with this energy from the E_SD result at the E_SD bound of
+/// the same small strains (4.1 for the default 0.025).
 ///
 /// \cgalModels `DistortionEnergy`
 class ARAP_energy
@@ -54,6 +56,11 @@ public:
 
   /// Value at every rotation, the global minimum.
   static constexpr double minimum_value() { return 0.0; }
+
+  /// The default distortion bound of `optimize_seams()` with this energy: it allows the strains that
+  /// E_SD <= 4.1 allows. At small strains \f$\sigma_i = 1 + \epsilon_i\f$, this energy is
+  /// \f$ \epsilon_1^2 + \epsilon_2^2 \f$ and E_SD - 4 four times that: 0.1 / 4.
+  static constexpr double default_bound() { return 0.025; }
 
   /// Identifier of the energy.
   const char* name() const { return "arap"; }

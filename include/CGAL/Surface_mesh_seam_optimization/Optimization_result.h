@@ -38,11 +38,14 @@ struct Optimization_result
   Error_code status = ERROR_WRONG_PARAMETER;
   std::string message;              ///< details of an error (which face, which parameter), or a note on the input (an untangled initial map)
   double distortion = std::numeric_limits<double>::infinity(); ///< E_SD of the result as written (>= 4)
+  /// the normalized (area-weighted mean) value of the run's `energy`, the figure the distortion bound is
+  /// on (equal to `distortion` for `Symmetric_Dirichlet_energy`)
+  double energy_value = std::numeric_limits<double>::infinity();
   /// E_SD of the result scaled uniformly by `optimal_scale`, the factor that
   /// minimizes it (closed form: with \f$a = \sum A_t(\sigma_1^2+\sigma_2^2)\f$ and
   /// \f$b = \sum A_t(\sigma_1^{-2}+\sigma_2^{-2})\f$, \f$s^4 = b/a\f$ and the value is
-  /// \f$2\sqrt{ab}/A\f$); the figure the bound is judged on for a scale-invariant
-  /// energy (`Conformal_energy`), whose map has no meaningful scale
+  /// \f$2\sqrt{ab}/A\f$). The map of a scale-invariant energy (`Conformal_energy`) is written at this
+  /// scale, so that its `distortion` equals this figure
   double distortion_at_optimal_scale = std::numeric_limits<double>::infinity();
   double optimal_scale = 1;         ///< see `distortion_at_optimal_scale`
   double initial_distortion = std::numeric_limits<double>::infinity();
@@ -56,7 +59,7 @@ struct Optimization_result
   std::size_t charts = 0;
   std::size_t iterations = 0;       ///< Newton iterations
   std::size_t topology_operations = 0;
-  bool bound_met = false;           ///< E_SD <= the bound (at the optimal scale for a scale-invariant energy)
+  bool bound_met = false;           ///< `energy_value` <= the bound
   std::size_t overlapping_triangle_pairs = 0; ///< checked on the result, whether `bijective` was asked for or not
   bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew

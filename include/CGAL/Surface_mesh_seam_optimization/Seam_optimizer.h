@@ -231,6 +231,7 @@ private:
   {
     m_status = m_core->finish(status);
     m_running = false;
+    if(has_result(m_status)) internal::scale_for_output(m_cm, m_energy);
     if(!has_result(m_status))
       m_message = m_status == ERROR_OVERLAPPING_UV_MAP ? internal::overlapping_initial_map_message()
                                                        : "the optimization failed";

@@ -48,6 +48,9 @@ public:
   /// Value at every rotation, the global minimum.
   static constexpr double minimum_value() { return 4.0; }
 
+  /// The default distortion bound of `optimize_seams()` with this energy (OptCuts' 4.1).
+  static constexpr double default_bound() { return 4.1; }
+
   /// Identifier of the energy.
   const char* name() const { return "symmetric_dirichlet"; }
 

@@ -22,6 +22,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -102,9 +103,9 @@ namespace Surface_mesh_seam_optimization {
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{distortion_bound}
 ///     \cgalParamDescription{not enforced here: `Optimization_result::bound_met` says whether the result
-///       meets it (E_SD at the optimal uniform scale for a scale-invariant energy)}
+///       meets it (the bound is on `energy`, in its own units)}
 ///     \cgalParamType{`double`}
-///     \cgalParamDefault{`4.1`}
+///     \cgalParamDefault{the energy's `default_bound()` (4.1 for `Symmetric_Dirichlet_energy`)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -185,12 +186,14 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
     return result;
   }
 
+  internal::scale_for_output(cm, energy);
   internal::write_uv_map(cm, copy, uvmap);
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
     internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  // no bound is enforced here; say whether the result meets the one given (default 4.1)
-  const double bound = choose_parameter(get_parameter(np, internal_np::distortion_bound),
-                                        internal::default_distortion_bound);
+  // no bound is enforced here; say whether the result meets the one given (default: the energy's)
+  double bound = std::numeric_limits<double>::infinity();
+  std::string ignored;
+  if(!internal::read_distortion_bound(np, energy, bound, ignored)) bound = -1; // none: not met
   internal::measure_result(cm, energy, bound, result);
   result.seconds = timer.time();
   return result;

@@ -8,6 +8,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Cut_strategy.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Extremity_cuts.h>
+#include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_costs.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
@@ -23,164 +24,11 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
-/// Jointly optimizes the seams and the UV map of `tm` (OptCuts): the shortest
-/// seams it finds whose map meets the distortion bound, or, with
-/// `seam_weight`, a stationary point of E_w = (1 - lambda) E_SD + lambda E_se.
-///
-/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
-/// \tparam UVMap a read-write property map `halfedge_descriptor -> Point_2`
-///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
-///
-/// \param tm a triangle mesh of any genus, with any number of boundary loops and connected
-///   components (see `compute_initial_parameterization()` for how it is cut into charts first)
-/// \param uvmap receives the UV map
-/// \param np an optional sequence of \ref PkgSurfaceMeshSeamOptimizationNamedParameters "named parameters"
-///   among the ones listed below, chained in any order
-///   (`parameters::distortion_bound(4.1).bijective(false).vertex_point_map(vpm)`; a parameter given twice
-///   takes its last value):
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{distortion_bound}
-///     \cgalParamDescription{bound on E_SD (see below for the scale); the result meets it with the shortest seams found}
-///     \cgalParamType{`double` (any arithmetic type)}
-///     \cgalParamDefault{`4.1`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{seam_weight}
-///     \cgalParamDescription{a fixed lambda in [0, 1): no bound, no dual step}
-///     \cgalParamType{`double` (any arithmetic type)}
-///     \cgalParamDefault{none (bound mode)}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{bijective}
-///     \cgalParamDescription{keep the charts from overlapping one another or themselves: the space between
-///       them is meshed (a scaffold) and no triangle of charts or scaffold may flip.
-///       With `use_uv_map_as_initial`, the given map must then be bijective (else `ERROR_OVERLAPPING_UV_MAP`)}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`true`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{edge_is_seam_map}
-///     \cgalParamDescription{read-write `edge_descriptor -> bool`: initial seams, and the result}
-///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
-///       as key type and `bool` as value type}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{seam_cost_map}
-///     \cgalParamDescription{regional seam preferences: `edge_descriptor -> double` (>= 0) multiplying each edge's
-///       length in the seam term E_se, which the topology steps and the dual step optimize (> 1 repels seams,
-///       < 1 attracts them, 0 makes them free); `Optimization_result::weighted_seam_length_normalized` reports
-///       the weighted term, `seam_length_normalized` the plain one. A negative or non-finite value gives
-///       `ERROR_WRONG_PARAMETER`. `edge_seam_weight_map`, the package's former name, is a deprecated alias,
-///       read when `seam_cost_map` is not given}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
-///       as key type and a value type convertible to `double`}
-///     \cgalParamDefault{all 1}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_seam_cost_map}
-///     \cgalParamDescription{the per-vertex form of `seam_cost_map`: an edge's cost is the mean of its two
-///       vertices' (multiplied by its `seam_cost_map` value when both are given); `region_seam_costs()` makes
-///       one from a painted region of vertices}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-///       as key type and a value type convertible to `double`}
-///     \cgalParamDefault{all 1}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{use_uv_map_as_initial}
-///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply; flipped or degenerate
-///       triangles are untangled first, as in `minimize_distortion()`, and `Optimization_result::message`
-///       says so}
-///     \cgalParamType{`bool`}
-///     \cgalParamDefault{`false`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{vertex_point_map}
-///     \cgalParamDescription{the 3D points}
-///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
-///       as key type and a 3D point type as value type}
-///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
-///       types of the initial map); the optimization itself works in `double`}
-///     \cgalParamType{a model of `Kernel`}
-///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{energy}
-///     \cgalParamDescription{a model of `DistortionEnergy` for the descent steps (the bound is always on E_SD)}
-///     \cgalParamType{a model of `DistortionEnergy`}
-///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{sparse_linear_solver}
-///     \cgalParamDescription{a model of `SparseSolverTraits`}
-///     \cgalParamType{a model of `SparseSolverTraits`}
-///     \cgalParamDefault{`Default_sparse_solver_traits`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{visitor}
-///     \cgalParamDescription{a model of `SeamOptimizationVisitor`. Passed by value (`visitor(v)`,
-///       `visitor(My_visitor())`), it is copied and the copy is called, as in `Polygon_mesh_processing`;
-///       pass `std::ref(v)` to have `v` itself called (to read its state afterwards)}
-///     \cgalParamType{a model of `SeamOptimizationVisitor`, or `std::reference_wrapper` of one}
-///     \cgalParamDefault{`Default_seam_optimization_visitor`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{cap on Newton iterations, in total (CGAL's parameter; `maximum_number_of_iterations`,
-///       the package's former name for it, is a deprecated alias, read when `number_of_iterations` is not given)}
-///     \cgalParamType{`std::size_t` (any integral type)}
-///     \cgalParamDefault{`100000`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_recut_rounds}
-///     \cgalParamDescription{bound mode: after the first result, rounds of unzipping a tenth of the seams where
-///       they buy least and cutting again from there, each after straightening rounds (a winding seam path
-///       replaced by its shortcut) while these find shorter seams; the shortest seams that meet the bound are
-///       kept, and the rounds end at the first unzipping round that finds none shorter (more time for shorter
-///       seams; 0 turns all of them off).
-///       Reaching `number_of_iterations` during these rounds ends them with status `OK`}
-///     \cgalParamType{`int` (any integral type)}
-///     \cgalParamDefault{`6`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{cut_strategy}
-///     \cgalParamDescription{`OPTCUTS`, or `EBCUTS`, the baseline of the OptCuts paper's comparison: cuts grown
-///       one at a time from the vertex of largest distortion to the nearest seam or border along a shortest
-///       path, the distortion minimized with the seams fixed in between (no scaffold), until the bound is met;
-///       `topology_operations` counts the cuts. Not with `seam_weight` or `texture_size`}
-///     \cgalParamType{`Cut_strategy`}
-///     \cgalParamDefault{`OPTCUTS`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_starts}
-///     \cgalParamDescription{bound mode: 2 runs two starts from the same initial map, the first with OptCuts'
-///       dual step and the second with one that holds the price of distortion while some cut already pays at
-///       it, and keeps the result with the shorter (weighted) seams among those that meet the bound (the first
-///       on a tie, or when neither does); they run in parallel when TBB is linked, each with its own
-///       `number_of_iterations` and `time_limit`, and the result does not depend on the number of threads
-///       (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are: the starts
-///       then run one after the other).
-///       1 runs the first alone (half the work, seams longer on some meshes). The visitor is called by the
-///       first start only, from the calling thread; when it stops the run, both starts stop and the first's
-///       result is kept (`Optimization_result::start` says which start the result comes from)}
-///     \cgalParamType{`int` (any integral type), 1 or 2}
-///     \cgalParamDefault{`2`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{time_limit}
-///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
-///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{none}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{texture_size}
-///     \cgalParamDescription{when given, the result's charts are packed into [0,1]^2 for a texture of this
-///       many texels (see `pack_charts()`, whose `margin`, `allow_rotation` and `equal_texel_density` are
-///       read too); the figures of the result are those of the map before packing (same E_SD at the optimal
-///       scale, same seams). Invalid packing parameters are refused before the optimization starts}
-///     \cgalParamType{`double`}
-///     \cgalParamDefault{none (not packed)}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-///
-/// The bound is on E_SD of the map as written, but for a scale-invariant
-/// energy (`Conformal_energy`), where it is judged at the map's optimal
-/// uniform scale (`Optimization_result::distortion_at_optimal_scale`).
-/// A result with a flipped or degenerate UV triangle is never written
-/// (`ERROR_DEGENERATE_UV_RESULT`).
-template <typename TriangleMesh, typename UVMap,
-          typename NamedParameters = parameters::Default_named_parameters>
-Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
-                                   const NamedParameters& np = parameters::default_values())
+namespace internal {
+
+// optimize_seams(), less the E_SD start it gives a non-barrier energy.
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -208,13 +56,9 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     if(get_parameter(np, internal_np::cut_strategy) == EBCUTS)
     {
       const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
-      const double bound =
-        choose_parameter(get_parameter(np, internal_np::distortion_bound), internal::default_distortion_bound);
-      if(!(bound > 4.) || !std::isfinite(bound))
-      {
-        result.message = "distortion_bound must be a finite number > 4";
+      double bound = 0;
+      if(!internal::read_distortion_bound(np, energy, bound, result.message))
         return result;
-      }
       if(pack || !parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
       {
         result.message = "cut_strategy EBCUTS takes no seam_weight or texture_size";
@@ -299,6 +143,233 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     kept->write_seam_map(get_parameter(np, internal_np::edge_is_seam_map));
   result.seconds = timer.time();
   return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
+/// Jointly optimizes the seams and the UV map of `tm` (OptCuts): the shortest
+/// seams it finds whose map meets the distortion bound, or, with
+/// `seam_weight`, a stationary point of E_w = (1 - lambda) E_SD + lambda E_se.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` (triangles only)
+/// \tparam UVMap a read-write property map `halfedge_descriptor -> Point_2`
+///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
+///
+/// \param tm a triangle mesh of any genus, with any number of boundary loops and connected
+///   components (see `compute_initial_parameterization()` for how it is cut into charts first)
+/// \param uvmap receives the UV map
+/// \param np an optional sequence of \ref PkgSurfaceMeshSeamOptimizationNamedParameters "named parameters"
+///   among the ones listed below, chained in any order
+///   (`parameters::distortion_bound(4.1).bijective(false).vertex_point_map(vpm)`; a parameter given twice
+///   takes its last value):
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{distortion_bound}
+///     \cgalParamDescription{bound on the normalized `energy` (E_SD by default), above its minimum; the result
+///       meets it with the shortest seams found}
+///     \cgalParamType{`double` (any arithmetic type)}
+///     \cgalParamDefault{the energy's `default_bound()`: `4.1` for `Symmetric_Dirichlet_energy` (minimum 4),
+///       \f$2 + 0.025(1 + w)\f$ for `Conformal_energy` with area weight \f$w\f$ (minimum 2; 2.02525 by
+///       default), `0.025` for `ARAP_energy` (minimum 0)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{seam_weight}
+///     \cgalParamDescription{a fixed lambda in [0, 1): no bound, no dual step}
+///     \cgalParamType{`double` (any arithmetic type)}
+///     \cgalParamDefault{none (bound mode)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{bijective}
+///     \cgalParamDescription{keep the charts from overlapping one another or themselves: the space between
+///       them is meshed (a scaffold) and no triangle of charts or scaffold may flip.
+///       With `use_uv_map_as_initial`, the given map must then be bijective (else `ERROR_OVERLAPPING_UV_MAP`)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_seam_map}
+///     \cgalParamDescription{read-write `edge_descriptor -> bool`: initial seams, and the result}
+///     \cgalParamType{a model of `ReadWritePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and `bool` as value type}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{seam_cost_map}
+///     \cgalParamDescription{regional seam preferences: `edge_descriptor -> double` (>= 0) multiplying each edge's
+///       length in the seam term E_se, which the topology steps and the dual step optimize (> 1 repels seams,
+///       < 1 attracts them, 0 makes them free); `Optimization_result::weighted_seam_length_normalized` reports
+///       the weighted term, `seam_length_normalized` the plain one. A negative or non-finite value gives
+///       `ERROR_WRONG_PARAMETER`. `edge_seam_weight_map`, the package's former name, is a deprecated alias,
+///       read when `seam_cost_map` is not given}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor`
+///       as key type and a value type convertible to `double`}
+///     \cgalParamDefault{all 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_seam_cost_map}
+///     \cgalParamDescription{the per-vertex form of `seam_cost_map`: an edge's cost is the mean of its two
+///       vertices' (multiplied by its `seam_cost_map` value when both are given); `region_seam_costs()` makes
+///       one from a painted region of vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a value type convertible to `double`}
+///     \cgalParamDefault{all 1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_uv_map_as_initial}
+///     \cgalParamDescription{start from the UVs of `uvmap` and the seams they imply; flipped or degenerate
+///       triangles are untangled first, as in `minimize_distortion()`, and `Optimization_result::message`
+///       says so}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor`
+///       as key type and a 3D point type as value type}
+///     \cgalParamDefault{`get_const_property_map(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{a model of `Kernel`, passed on to `compute_initial_parameterization()` (the
+///       types of the initial map); the optimization itself works in `double`}
+///     \cgalParamType{a model of `Kernel`}
+///     \cgalParamDefault{the kernel of the point type of `vertex_point_map`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{energy}
+///     \cgalParamDescription{a model of `DistortionEnergy`: the descent steps minimize it, the topology steps
+///       price cuts by it and the bound is on it (`Optimization_result::energy_value`; E_SD is reported too)}
+///     \cgalParamType{a model of `DistortionEnergy`}
+///     \cgalParamDefault{`Symmetric_Dirichlet_energy`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{sparse_linear_solver}
+///     \cgalParamDescription{a model of `SparseSolverTraits`}
+///     \cgalParamType{a model of `SparseSolverTraits`}
+///     \cgalParamDefault{`Default_sparse_solver_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{a model of `SeamOptimizationVisitor`. Passed by value (`visitor(v)`,
+///       `visitor(My_visitor())`), it is copied and the copy is called, as in `Polygon_mesh_processing`;
+///       pass `std::ref(v)` to have `v` itself called (to read its state afterwards)}
+///     \cgalParamType{a model of `SeamOptimizationVisitor`, or `std::reference_wrapper` of one}
+///     \cgalParamDefault{`Default_seam_optimization_visitor`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{cap on Newton iterations, in total (CGAL's parameter; `maximum_number_of_iterations`,
+///       the package's former name for it, is a deprecated alias, read when `number_of_iterations` is not given)}
+///     \cgalParamType{`std::size_t` (any integral type)}
+///     \cgalParamDefault{`100000`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_recut_rounds}
+///     \cgalParamDescription{bound mode: after the first result, rounds of unzipping a tenth of the seams where
+///       they buy least and cutting again from there, each after straightening rounds (a winding seam path
+///       replaced by its shortcut) while these find shorter seams; the shortest seams that meet the bound are
+///       kept, and the rounds end at the first unzipping round that finds none shorter (more time for shorter
+///       seams; 0 turns all of them off).
+///       Reaching `number_of_iterations` during these rounds ends them with status `OK`}
+///     \cgalParamType{`int` (any integral type)}
+///     \cgalParamDefault{`6`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cut_strategy}
+///     \cgalParamDescription{`OPTCUTS`, or `EBCUTS`, the baseline of the OptCuts paper's comparison: cuts grown
+///       one at a time from the vertex of largest distortion to the nearest seam or border along a shortest
+///       path, the distortion minimized with the seams fixed in between (no scaffold), until the bound is met;
+///       `topology_operations` counts the cuts. Not with `seam_weight` or `texture_size`}
+///     \cgalParamType{`Cut_strategy`}
+///     \cgalParamDefault{`OPTCUTS`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_starts}
+///     \cgalParamDescription{bound mode: 2 runs two starts from the same initial map, the first with OptCuts'
+///       dual step and the second with one that holds the price of distortion while some cut already pays at
+///       it, and keeps the result with the shorter (weighted) seams among those that meet the bound (the first
+///       on a tie, or when neither does); they run in parallel when TBB is linked, each with its own
+///       `number_of_iterations` and `time_limit`, and the result does not depend on the number of threads
+///       (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are: the starts
+///       then run one after the other).
+///       1 runs the first alone (half the work, seams longer on some meshes). The visitor is called by the
+///       first start only, from the calling thread; when it stops the run, both starts stop and the first's
+///       result is kept (`Optimization_result::start` says which start the result comes from)}
+///     \cgalParamType{`int` (any integral type), 1 or 2}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{time_limit}
+///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
+///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{texture_size}
+///     \cgalParamDescription{when given, the result's charts are packed into [0,1]^2 for a texture of this
+///       many texels (see `pack_charts()`, whose `margin`, `allow_rotation` and `equal_texel_density` are
+///       read too); the figures of the result are those of the map before packing (same E_SD at the optimal
+///       scale, same seams). Invalid packing parameters are refused before the optimization starts}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{none (not packed)}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// The bound is on the run's energy, in its own units: the defaults of the
+/// three energies allow the same small strains (at \f$\sigma_i = 1 + \epsilon_i\f$,
+/// E_SD - 4 is \f$4(\epsilon_1^2 + \epsilon_2^2)\f$, ARAP \f$\epsilon_1^2 + \epsilon_2^2\f$ and
+/// the conformal energy minus 2 is \f$(\epsilon_1 - \epsilon_2)^2 + w(\epsilon_1 + \epsilon_2)^2\f$,
+/// \f$(1 + w)/4\f$ of E_SD - 4 on average). The map of a scale-invariant energy
+/// (`Conformal_energy` with `area_weight` 0) is written at the uniform scale that
+/// minimizes its E_SD. An energy that is no barrier (`ARAP_energy`) gives squeezed
+/// triangles a finite energy, so that from the initial map of a closed mesh no
+/// split pays enough to cut into its squeezed parts: such a run starts from the
+/// E_SD run at the E_SD bound allowing the same small strains (4.1 for ARAP's
+/// 0.025) and goes on with its energy, unless `use_uv_map_as_initial` or
+/// `seam_weight` is given; the result counts the iterations and operations of both.
+/// A result with a flipped or degenerate UV triangle is never written
+/// (`ERROR_DEGENERATE_UV_RESULT`).
+template <typename TriangleMesh, typename UVMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
+                                   const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
+                                                 Symmetric_Dirichlet_energy()))> Energy;
+  CGAL::Real_timer timer;
+  timer.start();
+  Optimization_result result;
+  // An energy that is no barrier (ARAP) gives a squeezed triangle a finite
+  // energy: from the initial map of a closed mesh (a short slit, the rest
+  // squeezed) no split then pays enough to cut into the squeezed parts
+  // (bunny_i_f10000 with ARAP stalled at 0.84 with lambda near 0, then 8094 of
+  // its faces were detached). Such a run starts from the E_SD run at the E_SD
+  // bound that allows the same small strains, and goes on with its energy.
+  if constexpr(!std::is_same_v<Energy, Symmetric_Dirichlet_energy> &&
+               parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+  {
+    const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+    const bool ebcuts = choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) == EBCUTS;
+    if(!internal::is_barrier_energy(energy) && !ebcuts &&
+       !choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false))
+    {
+      double bound = 0;
+      if(!internal::read_distortion_bound(np, energy, bound, result.message))
+        return result;
+      Optimization_result warm = internal::optimize_seams_impl(
+        tm, uvmap,
+        np.energy(Symmetric_Dirichlet_energy())
+          .distortion_bound(internal::symmetric_dirichlet_bound_with_same_strains(energy, bound)));
+      if(warm.status != OK && warm.status != WARNING_BOUND_NOT_MET)
+      {
+        if(warm.has_result()) // stopped: the E_SD map, judged on the run's energy
+        {
+          warm.energy_value = distortion(tm, uvmap, np);
+          warm.bound_met = warm.energy_value <= bound;
+        }
+        return warm;
+      }
+      Optimization_result r = internal::optimize_seams_impl(tm, uvmap, np.use_uv_map_as_initial(true));
+      if(r.has_result())
+      {
+        r.initial_distortion = warm.initial_distortion;
+        r.iterations += warm.iterations;
+        r.topology_operations += warm.topology_operations;
+        r.seconds = timer.time();
+      }
+      return r;
+    }
+  }
+
+  return internal::optimize_seams_impl(tm, uvmap, np);
 }
 
 } // namespace Surface_mesh_seam_optimization

@@ -22,6 +22,11 @@ usage_error "> 4" --distortion-bound 3.5
 usage_error "> 4" --distortion-bound 4
 usage_error "> 4" --distortion-bound=abc
 usage_error "> 4" --distortion-bound inf
+usage_error "> 2 (the minimum of conformal)" --energy conformal --distortion-bound 1.5
+usage_error "> 0 (the minimum of arap)" --distortion-bound 0 --energy arap
+usage_error "area term of '--energy conformal' only" --area-weight 0.1
+usage_error "area term of '--energy conformal' only" --area-weight 0.1 --energy arap
+usage_error "needs a number >= 0" --area-weight -1 --energy conformal
 usage_error "\[0, 1)" --seam-weight 1.5
 usage_error "\[0, 1)" --seam-weight -0.1
 usage_error "\[0, 1)" --seam-weight 1

@@ -94,8 +94,8 @@ public:
         if(m_has_best) restore_best();
         else if(status == OK)
         {
-          // no split left lowers E_SD: the worst triangles go alone (E_SD 4 each)
-          m_detached_faces = detach_faces_until_bound(m_cm, m_settings.distortion_bound);
+          // no split left lowers the energy: the worst triangles go alone (at its minimum)
+          m_detached_faces = detach_faces_until_bound(m_cm, m_settings.distortion_bound, m_energy);
           if(!bound_met()) status = WARNING_BOUND_NOT_MET;
         }
       }
@@ -109,6 +109,7 @@ private:
   using Base::m_best_se;
   using Base::m_cancelled;
   using Base::m_cm;
+  using Base::m_energy;
   using Base::m_defer_pattern;
   using Base::m_guard;
   using Base::m_has_best;

@@ -24,12 +24,13 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-// Symmetric Dirichlet density s1^2 + s2^2 + s1^-2 + s2^-2 of face f.
-inline double symmetric_dirichlet_density(const Cut_mesh& cm, std::size_t f)
+// The energy density of face f (E_SD: s1^2 + s2^2 + s1^-2 + s2^-2).
+template <typename Energy>
+double face_energy_density(const Cut_mesh& cm, std::size_t f, const Energy& energy)
 {
   Eigen::Matrix2d J;
   face_jacobian(cm, f, cm.uv.data(), J);
-  return Symmetric_Dirichlet_energy().value(J);
+  return energy.value(J);
 }
 
 // True if taking face f out of its chart would leave some UV vertex of it
@@ -53,19 +54,22 @@ inline bool detaching_pinches(const Cut_mesh& cm, std::size_t f)
 }
 
 // Detaches the faces of highest density, one at a time, until the
-// area-weighted mean is at most `bound`: first those that leave their chart
+// area-weighted mean of `energy` is at most `bound` (a detached face is at
+// its 3D shape, the energy's minimum): first those that leave their chart
 // whole, then (if that is not enough) any. Each gets UV vertices of its own
 // (reusing those it alone had) at its 3D shape, in rows below every chart;
 // charts that then touch another at a single vertex are moved into the rows
 // too, so that nothing overlaps or touches. Returns the number of faces detached.
-inline std::size_t detach_faces_until_bound(Cut_mesh& cm, double bound)
+template <typename Energy>
+std::size_t detach_faces_until_bound(Cut_mesh& cm, double bound, const Energy& energy)
 {
+  const double minimum = Energy::minimum_value();
   const std::size_t nf = cm.number_of_faces();
   std::vector<std::pair<double, std::size_t> > order(nf);
   double total = 0;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    order[f] = std::make_pair(-symmetric_dirichlet_density(cm, f), f);
+    order[f] = std::make_pair(-face_energy_density(cm, f, energy), f);
     total += cm.face_area[f] * -order[f].first;
   }
   total /= cm.total_area;
@@ -111,7 +115,7 @@ inline std::size_t detach_faces_until_bound(Cut_mesh& cm, double bound)
     for(const auto& o : order)
     {
       const double density = -o.first;
-      if(!(total > bound) || !(density > 4)) break;
+      if(!(total > bound) || !(density > minimum)) break;
       const std::size_t f = o.second;
       if(done[f] || (pass == 0 && detaching_pinches(cm, f))) continue;
       done[f] = 1;
@@ -129,7 +133,7 @@ inline std::size_t detach_faces_until_bound(Cut_mesh& cm, double bound)
         cm.uv[2 * u] = at.first - left + local[k][0];
         cm.uv[2 * u + 1] = at.second + local[k][1];
       }
-      total += cm.face_area[f] * (4 - density) / cm.total_area;
+      total += cm.face_area[f] * (minimum - density) / cm.total_area;
       ++detached;
     }
 

@@ -192,7 +192,7 @@ public:
     const double psi = static_cast<const Derived&>(*this).value(J);
     if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); return psi; }
     const Signed_svd_2 svd(J);
-    isotropic_gradient(svd, Derived::derivatives(svd.s1, svd.s2), dJ);
+    isotropic_gradient(svd, static_cast<const Derived&>(*this).derivatives(svd.s1, svd.s2), dJ);
     return psi;
   }
 
@@ -202,7 +202,7 @@ public:
     const double psi = static_cast<const Derived&>(*this).value(J);
     if(psi == std::numeric_limits<double>::infinity()) { dJ.setZero(); H.setZero(); return psi; }
     const Signed_svd_2 svd(J);
-    const Isotropic_derivatives_2 d = Derived::derivatives(svd.s1, svd.s2);
+    const Isotropic_derivatives_2 d = static_cast<const Derived&>(*this).derivatives(svd.s1, svd.s2);
     isotropic_gradient(svd, d, dJ);
     isotropic_hessian(svd, d, project, H);
     return psi;

@@ -29,7 +29,8 @@ void measure_result(const Cut_mesh& cm, const Energy& energy, double bound, Opti
 {
   r.distortion = total_energy(cm, Symmetric_Dirichlet_energy(), cm.uv.data());
   r.distortion_at_optimal_scale = symmetric_dirichlet_at_optimal_scale(cm, cm.uv.data(), &r.optimal_scale);
-  r.bound_met = judged_distortion(cm, energy, cm.uv.data()) <= bound;
+  r.energy_value = judged_distortion(cm, energy, cm.uv.data());
+  r.bound_met = r.energy_value <= bound;
   r.seam_length = cm.seam_length();
   r.seam_length_normalized = r.seam_length / cm.normalization_radius();
   r.weighted_seam_length_normalized =

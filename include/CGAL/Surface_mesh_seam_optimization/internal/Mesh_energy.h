@@ -9,6 +9,7 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_MESH_ENERGY_H
 
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 
@@ -17,19 +18,66 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-// Energies may declare `static constexpr bool is_scale_invariant()`.
+// Energies may declare `bool is_scale_invariant() const`.
 template <typename Energy, typename = void>
-struct Is_scale_invariant : std::false_type {};
+struct Has_scale_invariance : std::false_type {};
 template <typename Energy>
-struct Is_scale_invariant<Energy, std::void_t<decltype(Energy::is_scale_invariant())> >
-  : std::integral_constant<bool, Energy::is_scale_invariant()> {};
+struct Has_scale_invariance<Energy, std::void_t<decltype(std::declval<const Energy&>().is_scale_invariant())> >
+  : std::true_type {};
+
+template <typename Energy>
+bool is_scale_invariant(const Energy& energy)
+{
+  if constexpr(Has_scale_invariance<Energy>::value)
+    return energy.is_scale_invariant();
+  else
+    return false;
+}
+
+// Energies may declare `double default_bound() const`.
+template <typename Energy, typename = void>
+struct Has_default_bound : std::false_type {};
+template <typename Energy>
+struct Has_default_bound<Energy, std::void_t<decltype(std::declval<const Energy&>().default_bound())> >
+  : std::true_type {};
+
+// The distortion bound: `distortion_bound` if given, else the energy's
+// default_bound(). False, with `message`, if there is none or it is not a
+// finite number above the energy's minimum.
+template <typename Energy, typename NamedParameters>
+bool read_distortion_bound(const NamedParameters& np, const Energy& energy, double& bound, std::string& message)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::distortion_bound_t>::value)
+    bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), 0.);
+  else if constexpr(Has_default_bound<Energy>::value)
+    bound = energy.default_bound();
+  else
+  {
+    message = std::string("the energy '") + energy.name() + "' has no default_bound(): give distortion_bound";
+    return false;
+  }
+  if(!(bound > Energy::minimum_value()) || !std::isfinite(bound))
+  {
+    std::ostringstream s;
+    s << "distortion_bound must be a finite number > " << Energy::minimum_value() << " (the minimum of '"
+      << energy.name() << "')";
+    message = s.str();
+    return false;
+  }
+  return true;
+}
 
 // Whether the energy grows without bound as a triangle degenerates (SD,
 // MIPS), measured on a sliver: ARAP stays near 1 there.
@@ -39,6 +87,20 @@ bool is_barrier_energy(const Energy& energy)
   Eigen::Matrix2d J;
   J << 1, 0, 0, 1e-8;
   return energy.value(J) > 1e4;
+}
+
+// The E_SD bound allowing the small strains that `bound` allows `energy`: at
+// singular values (1 + h, 1), E_SD - 4 ~ 4 h^2; the energy's own curvature
+// there is measured (ARAP: h^2, so ARAP 0.025 gives E_SD 4.1).
+template <typename Energy>
+double symmetric_dirichlet_bound_with_same_strains(const Energy& energy, double bound)
+{
+  const double h = 1e-3;
+  Eigen::Matrix2d J;
+  J << 1 + h, 0, 0, 1;
+  const double c = (energy.value(J) - Energy::minimum_value()) / (h * h);
+  const double b = 4 + 4 * (bound - Energy::minimum_value()) / c;
+  return std::isfinite(b) && b > 4 ? b : Symmetric_Dirichlet_energy::default_bound();
 }
 
 // E_SD(s uv) = s^2 a + b / s^2 with a = sum A_t |J|^2, b = sum A_t |J|^2 / det^2
@@ -74,16 +136,27 @@ double total_energy(const Cut_mesh& cm, const Energy& energy, const double* uv)
   return e / cm.total_area;
 }
 
-// The E_SD a distortion bound is judged on: that of the map as it is, or at
-// its optimal uniform scale for a scale-invariant energy (whose map's scale
-// means nothing: MIPS on cat_f1500, seams fixed, E_SD 9.2e8 as it is, 41.05 at the scale).
+// The figure a distortion bound is judged on: the normalized energy itself,
+// in its own units (E_SD for E_SD; a scale-invariant energy needs no scale).
 template <typename Energy>
-double judged_distortion(const Cut_mesh& cm, const Energy&, const double* uv)
+double judged_distortion(const Cut_mesh& cm, const Energy& energy, const double* uv)
 {
-  if constexpr(Is_scale_invariant<Energy>::value)
-    return symmetric_dirichlet_at_optimal_scale(cm, uv);
-  else
-    return total_energy(cm, Symmetric_Dirichlet_energy(), uv);
+  return total_energy(cm, energy, uv);
+}
+
+// The map of a scale-invariant energy has no meaningful scale: it is written
+// at the one that minimizes E_SD (else E_SD as written is arbitrary: MIPS on
+// cat_f1500 with its seams fixed gave 9.2e8 as it was, 41.05 at that scale).
+template <typename Energy>
+void scale_for_output(Cut_mesh& cm, const Energy& energy)
+{
+  if(is_scale_invariant(energy))
+  {
+    double s = 1;
+    symmetric_dirichlet_at_optimal_scale(cm, cm.uv.data(), &s);
+    if(std::isfinite(s) && s > 0)
+      for(double& x : cm.uv) x *= s;
+  }
 }
 
 // Scales all UVs (about their centroid) to the energy-minimizing factor:

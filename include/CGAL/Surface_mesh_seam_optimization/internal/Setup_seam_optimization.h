@@ -38,12 +38,8 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   using parameters::choose_parameter;
   using parameters::get_parameter;
 
-  settings.distortion_bound = choose_parameter(get_parameter(np, internal_np::distortion_bound), default_distortion_bound);
-  if(!(settings.distortion_bound > 4.) || !std::isfinite(settings.distortion_bound))
-  {
-    message = "distortion_bound must be a finite number > 4";
+  if(!read_distortion_bound(np, energy, settings.distortion_bound, message))
     return ERROR_WRONG_PARAMETER;
-  }
   if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
   {
     settings.fixed_lambda = true;
