@@ -1065,3 +1065,23 @@ BOOST_AUTO_TEST_CASE(each_energy_meets_its_own_default_bound)
              SMSO::ERROR_WRONG_PARAMETER);
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()).distortion_bound(0.01)).bound_met);
 }
+
+// The E_SD start of an ARAP run shares the call's iteration cap: stopped
+// within it (in the E_SD start, or after it), with a valid map whose
+// energy_value is ARAP's.
+BOOST_AUTO_TEST_CASE(the_e_sd_start_of_arap_counts_in_the_iteration_cap)
+{
+  for(std::size_t cap : {30u, 140u})
+  {
+    Run r;
+    run("cat_f1500.obj", r, SMSO_np::energy(SMSO::ARAP_energy()).number_of_iterations(cap));
+    BOOST_TEST_MESSAGE("cat, ARAP, cap " << cap << ": " << SMSO::get_error_code_name(r.result.status) << ", "
+                       << r.result.iterations << " iterations, ARAP " << r.result.energy_value);
+    BOOST_TEST(r.result.has_result());
+    BOOST_TEST(r.result.iterations <= cap);
+    BOOST_TEST(SMSO::number_of_flipped_triangles(r.sm, r.uv) == 0u);
+    const double arap = SMSO::distortion(r.sm, r.uv, SMSO_np::energy(SMSO::ARAP_energy()));
+    BOOST_TEST(std::abs(r.result.energy_value - arap) <= 1e-9 + 1e-9 * arap);
+    if(cap == 30u) BOOST_TEST(r.result.status == SMSO::WARNING_MAXIMUM_ITERATIONS); // the E_SD start takes ~110
+  }
+}

@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -348,6 +349,16 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
         tm, uvmap,
         np.energy(Symmetric_Dirichlet_energy())
           .distortion_bound(internal::symmetric_dirichlet_bound_with_same_strains(energy, bound)));
+      // the iteration cap and the time limit are the call's: what is left goes on
+      const std::size_t cap = internal::number_of_iterations_parameter(np, internal::default_number_of_iterations);
+      double limit = std::numeric_limits<double>::infinity();
+      internal::read_time_limit(np, limit);
+      const double left = limit - timer.time();
+      if(warm.status == OK || warm.status == WARNING_BOUND_NOT_MET)
+      {
+        if(warm.iterations >= cap) warm.status = WARNING_MAXIMUM_ITERATIONS;
+        else if(!(left > 0)) warm.status = WARNING_TIME_LIMIT;
+      }
       if(warm.status != OK && warm.status != WARNING_BOUND_NOT_MET)
       {
         if(warm.has_result()) // stopped: the E_SD map, judged on the run's energy
@@ -357,7 +368,8 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
         }
         return warm;
       }
-      Optimization_result r = internal::optimize_seams_impl(tm, uvmap, np.use_uv_map_as_initial(true));
+      Optimization_result r = internal::optimize_seams_impl(
+        tm, uvmap, np.use_uv_map_as_initial(true).number_of_iterations(cap - warm.iterations).time_limit(left));
       if(r.has_result())
       {
         r.initial_distortion = warm.initial_distortion;
