@@ -1063,6 +1063,13 @@ BOOST_AUTO_TEST_CASE(each_energy_meets_its_own_default_bound)
   BOOST_TEST(low_conformal.message.find("> 2") != std::string::npos);
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()).distortion_bound(0.)).status ==
              SMSO::ERROR_WRONG_PARAMETER);
+  for(halfedge_descriptor h : sm.halfedges()) put(uv, h, Point_2(7, 7));
+  const auto negative = SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::Conformal_energy(-0.5)));
+  BOOST_TEST(negative.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(negative.message.find("below its minimum_value()") != std::string::npos);
+  bool untouched = true;
+  for(halfedge_descriptor h : sm.halfedges()) untouched = untouched && get(uv, h) == Point_2(7, 7);
+  BOOST_TEST(untouched);
   BOOST_TEST(SMSO::optimize_seams(sm, uv, SMSO_np::energy(SMSO::ARAP_energy()).distortion_bound(0.01)).bound_met);
 }
 

@@ -68,6 +68,18 @@ bool read_distortion_bound(const NamedParameters& np, const Energy& energy, doub
     message = std::string("the energy '") + energy.name() + "' has no default_bound(): give distortion_bound";
     return false;
   }
+  // an energy below its own minimum (a negative area_weight) would make the bound meaningless
+  for(double k : {0.5, 1., 2.})
+  {
+    Eigen::Matrix2d J;
+    J << k, k == 1 ? 0.3 : 0., 0, k;
+    if(!(energy.value(J) >= Energy::minimum_value()))
+    {
+      message = std::string("the energy '") + energy.name() +
+                "' takes values below its minimum_value() (a negative area_weight?)";
+      return false;
+    }
+  }
   if(!(bound > Energy::minimum_value()) || !std::isfinite(bound))
   {
     std::ostringstream s;
