@@ -226,6 +226,13 @@ BOOST_AUTO_TEST_CASE(a_scale_invariant_energy_is_written_at_the_optimal_scale)
     sm, uv, SMSO_np::combine(SMSO_np::energy(SMSO::Conformal_energy(0.)), SMSO_np::use_uv_map_as_initial(true),
                              SMSO_np::distortion_bound(1.01 * r.energy_value)));
   BOOST_TEST(loose.bound_met);
+
+  // an energy below its own minimum is refused, the map untouched
+  const auto written = uv[*sm.halfedges().begin()];
+  const auto negative = SMSO::minimize_distortion(sm, uv, SMSO_np::energy(SMSO::Conformal_energy(-0.5)));
+  BOOST_TEST(negative.status == SMSO::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(negative.message.find("below its minimum_value()") != std::string::npos);
+  BOOST_TEST(uv[*sm.halfedges().begin()] == written);
 }
 
 BOOST_AUTO_TEST_CASE(the_time_limit_stops_with_a_valid_result)

@@ -126,6 +126,11 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   Optimization_result result;
 
   const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+  if(!internal::check_energy(energy, result.message))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    return result;
+  }
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                  Default_sparse_solver_traits());
   const std::size_t max_iterations =

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Mesh_energy.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,15 +24,6 @@
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
-
-// The energy density of face f (E_SD: s1^2 + s2^2 + s1^-2 + s2^-2).
-template <typename Energy>
-double face_energy_density(const Cut_mesh& cm, std::size_t f, const Energy& energy)
-{
-  Eigen::Matrix2d J;
-  face_jacobian(cm, f, cm.uv.data(), J);
-  return energy.value(J);
-}
 
 // True if taking face f out of its chart would leave some UV vertex of it
 // with two fans that only touch there (f in the middle of an open fan).
@@ -69,7 +61,7 @@ std::size_t detach_faces_until_bound(Cut_mesh& cm, double bound, const Energy& e
   double total = 0;
   for(std::size_t f = 0; f < nf; ++f)
   {
-    order[f] = std::make_pair(-face_energy_density(cm, f, energy), f);
+    order[f] = std::make_pair(-face_energy_density(cm, f, cm.uv.data(), energy), f);
     total += cm.face_area[f] * -order[f].first;
   }
   total /= cm.total_area;

@@ -51,6 +51,26 @@ template <typename Energy>
 struct Has_default_bound<Energy, std::void_t<decltype(std::declval<const Energy&>().default_bound())> >
   : std::true_type {};
 
+// False, with `message`, if `energy` falls below its own minimum_value() on
+// a few maps (a negative area_weight): minimizing it or bounding it would be
+// meaningless.
+template <typename Energy>
+bool check_energy(const Energy& energy, std::string& message)
+{
+  for(double k : {0.5, 1., 2.})
+  {
+    Eigen::Matrix2d J;
+    J << k, k == 1 ? 0.3 : 0., 0, k;
+    if(!(energy.value(J) >= Energy::minimum_value()))
+    {
+      message = std::string("the energy '") + energy.name() +
+                "' takes values below its minimum_value() (a negative area_weight?)";
+      return false;
+    }
+  }
+  return true;
+}
+
 // The distortion bound: `distortion_bound` if given, else the energy's
 // default_bound(). False, with `message`, if there is none or it is not a
 // finite number above the energy's minimum.
@@ -68,18 +88,8 @@ bool read_distortion_bound(const NamedParameters& np, const Energy& energy, doub
     message = std::string("the energy '") + energy.name() + "' has no default_bound(): give distortion_bound";
     return false;
   }
-  // an energy below its own minimum (a negative area_weight) would make the bound meaningless
-  for(double k : {0.5, 1., 2.})
-  {
-    Eigen::Matrix2d J;
-    J << k, k == 1 ? 0.3 : 0., 0, k;
-    if(!(energy.value(J) >= Energy::minimum_value()))
-    {
-      message = std::string("the energy '") + energy.name() +
-                "' takes values below its minimum_value() (a negative area_weight?)";
-      return false;
-    }
-  }
+  if(!check_energy(energy, message))
+    return false;
   if(!(bound > Energy::minimum_value()) || !std::isfinite(bound))
   {
     std::ostringstream s;
@@ -133,18 +143,23 @@ inline double symmetric_dirichlet_at_optimal_scale(const Cut_mesh& cm, const dou
   return 2 * std::sqrt(a * b) / cm.total_area;
 }
 
+// The energy density psi(J_f) of face f under the UVs `uv`.
+template <typename Energy>
+double face_energy_density(const Cut_mesh& cm, std::size_t f, const double* uv, const Energy& energy)
+{
+  Eigen::Matrix2d J;
+  face_jacobian(cm, f, uv, J);
+  return energy.value(J);
+}
+
 // Total normalized energy sum_t A_t psi(J_t) / A; +inf if a face is flipped.
 template <typename Energy>
 double total_energy(const Cut_mesh& cm, const Energy& energy, const double* uv)
 {
   double e = 0;
-  Eigen::Matrix2d J;
   const std::size_t nf = cm.number_of_faces();
   for(std::size_t f = 0; f < nf; ++f)
-  {
-    face_jacobian(cm, f, uv, J);
-    e += cm.face_area[f] * energy.value(J);
-  }
+    e += cm.face_area[f] * face_energy_density(cm, f, uv, energy);
   return e / cm.total_area;
 }
 
