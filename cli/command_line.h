@@ -111,6 +111,8 @@ struct Options
   std::size_t recut_rounds = default_recut_rounds; // bound mode only
   bool has_starts = false;
   std::size_t starts = default_starts;    // bound mode only
+  bool has_proxy_faces = false;
+  std::size_t proxy_faces = std::size_t(SMSO::internal::default_proxy_number_of_faces); // bound mode only
   bool normalize = false;                 // written UVs scaled uniformly into [0,1]^2
   bool pack = false;                      // charts packed into [0,1]^2 (SMSO::pack_charts)
   double texture_size = default_texture_size; // --pack, --normalize with several charts: texels
@@ -259,6 +261,13 @@ inline void print_help(std::ostream& os)
      << "                          (in parallel), and the shorter seams that meet the bound\n"
      << "                          are kept; 1 for the first alone (half the work); not with\n"
      << "                          --seam-weight or --keep-seams (default: " << default_starts << ")\n"
+     << "  --proxy-faces N         a mesh of more than 2N faces: seams and map optimized first\n"
+     << "                          on a proxy of about N faces (the mesh simplified), then\n"
+     << "                          carried to the mesh, whose own run has only local work left\n"
+     << "                          (0: never); not with --seam-weight, --keep-seams,\n"
+     << "                          --use-input-uv, --seam-weights, --hide-seams or another\n"
+     << "                          energy, where the mesh runs directly (default: "
+     << SMSO::internal::default_proxy_number_of_faces << ")\n"
      << "  --time-limit S          stop the optimization after about S seconds (S > 0) and\n"
      << "                          write the best result so far (status WARNING_TIME_LIMIT,\n"
      << "                          exit 0); also with --keep-seams (default: none)\n"
@@ -340,7 +349,7 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     recognized.add_options()(name, "");
   for(const char* name : {"report", "svg", "png", "energy", "threads", "time-limit", "texture-size", "margin",
                           "distortion-bound", "seam-weight", "max-iterations", "recut-rounds", "seam-weights",
-                          "cut-strategy", "starts", "area-weight"})
+                          "cut-strategy", "starts", "area-weight", "proxy-faces"})
     recognized.add_options()(name, po::value<std::string>(), "");
   recognized.add_options()(positional_name, po::value<std::vector<std::string> >(), "");
   po::positional_options_description positional;
@@ -553,6 +562,12 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
       if(!number(options.starts, [](std::size_t n) { return n == 1 || n == 2; }, "1 or 2", &options.has_starts))
         return Parse_status::ERROR;
     }
+    else if(key == "--proxy-faces")
+    {
+      if(!number(options.proxy_faces, [](std::size_t) { return true; }, "a non-negative integer",
+                 &options.has_proxy_faces))
+        return Parse_status::ERROR;
+    }
     else
     {
       error = "unknown option '" + arg + "'";
@@ -594,6 +609,12 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
   if(options.has_starts && (options.keep_seams || options.has_seam_weight))
   {
     error = std::string("option '--starts' applies to the distortion bound, not to '") +
+            (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
+    return Parse_status::ERROR;
+  }
+  if(options.has_proxy_faces && (options.keep_seams || options.has_seam_weight))
+  {
+    error = std::string("option '--proxy-faces' applies to the distortion bound, not to '") +
             (options.keep_seams ? "--keep-seams" : "--seam-weight") + "'";
     return Parse_status::ERROR;
   }

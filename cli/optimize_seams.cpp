@@ -164,6 +164,8 @@ bool write_json_report(const std::string& path, const Run_report& r)
   fields.emplace_back("topology_operations", std::to_string(res.topology_operations));
   // which start of optimize_seams() the result comes from (see --starts)
   fields.emplace_back("start", r.mode != Mode::DISTORTION_BOUND || !ran ? "null" : std::to_string(res.start));
+  // faces of the proxy the seams were first optimized on (0: none; see --proxy-faces)
+  fields.emplace_back("proxy_faces", !ran ? "null" : std::to_string(res.proxy_faces));
   fields.emplace_back("normalized", r.normalized ? "true" : "false");
   fields.emplace_back("packed", r.packed ? "true" : "false");
   fields.emplace_back("texture_size", r.packed ? json_number(r.texture_size) : "null");
@@ -491,6 +493,7 @@ int run(const Options& options)
   request.recut_rounds = int(options.recut_rounds);
   request.cut_strategy = options.cut_strategy;
   request.starts = int(options.starts);
+  request.proxy_faces = options.proxy_faces;
   request.time_limit = options.time_limit;
   request.vertex_seam_cost = mesh.add_property_map<vertex_descriptor, double>("v:smso_seam_cost", 1.).first;
   request.edge_seam_cost = mesh.add_property_map<edge_descriptor, double>("e:smso_seam_cost", 1.).first;

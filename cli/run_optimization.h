@@ -58,6 +58,7 @@ struct Optimization_request
   std::size_t iteration_cap = 0;
   int recut_rounds = SMSO::internal::default_number_of_recut_rounds;  // DISTORTION_BOUND only
   int starts = SMSO::internal::default_number_of_starts;              // DISTORTION_BOUND only
+  std::size_t proxy_faces = SMSO::internal::default_proxy_number_of_faces; // DISTORTION_BOUND only
   double time_limit = 0;           // seconds (the time_limit named parameter); 0: none
   // Seam costs (vertex_seam_cost_map, seam_cost_map; all 1 without --seam-weights). Not in KEEP_SEAMS.
   SMSO::Cut_strategy cut_strategy = SMSO::OPTCUTS; // DISTORTION_BOUND only

@@ -58,7 +58,8 @@ SMSO::Optimization_result run_with_energy(Mesh& mesh, UV_map uvmap, Seam_map sea
                               with_visitor.distortion_bound(request.distortion_bound)
                                 .number_of_recut_rounds(request.recut_rounds)
                                 .cut_strategy(request.cut_strategy)
-                                .number_of_starts(request.starts));
+                                .number_of_starts(request.starts)
+                                .proxy_number_of_faces(request.proxy_faces));
 }
 
 } // namespace optimize_seams_cli

@@ -22,7 +22,7 @@
 // --solver ldlt|cholmod: Eigen_simplicial_ldlt_traits or Cholmod_traits (when the
 // package is built with CHOLMOD) instead of the default Default_sparse_solver_traits.
 //
-// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--time-limit S]
+// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--proxy-faces N] [--time-limit S]
 //                       [--distortion-only] [--no-bijectivity] [--solver default|ldlt|cholmod] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -79,6 +79,7 @@ struct Settings
   double bound = 4.1;
   std::size_t max_iterations = 100000;
   int recut_rounds = 6;
+  std::size_t proxy_faces = SMSO::internal::default_proxy_number_of_faces;
   double time_limit = 0; // seconds; 0: none
   bool distortion_only = false;
   bool bijective = true;
@@ -136,6 +137,7 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
   const auto common = SMSO_np::combine(SMSO_np::distortion_bound(settings.bound),
                                        SMSO_np::number_of_iterations(settings.max_iterations),
                                        SMSO_np::number_of_recut_rounds(settings.recut_rounds),
+                                       SMSO_np::proxy_number_of_faces(settings.proxy_faces),
                                        SMSO_np::edge_is_seam_map(seams),
                                        SMSO_np::sparse_linear_solver(SolverTraits()));
   if(settings.distortion_only)
@@ -224,13 +226,14 @@ static Row run(const std::string& file, const Settings& settings)
 static int usage(const char* argv0)
 {
   std::cerr << "usage: " << argv0
-            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--time-limit S] [--distortion-only]"
+            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--proxy-faces N] [--time-limit S] [--distortion-only]"
                " [--solver S]"
                " [--no-bijectivity] [--no-header] mesh.obj ...\n"
                "  --bound B           distortion bound on E_SD (default 4.1)\n"
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
                "  --max-iterations N  cap on Newton iterations (default 100000)\n"
                "  --recut-rounds N    number_of_recut_rounds(N) (default 6; 0: none)\n"
+               "  --proxy-faces N     proxy_number_of_faces(N): seams of meshes above 2N faces first on a proxy\n"
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
                "  --no-bijectivity    no scaffold: charts may overlap\n"
@@ -252,6 +255,7 @@ int main(int argc, char** argv)
     else if(a == "--out-dir" && i + 1 < argc) settings.out_dir = argv[++i];
     else if(a == "--max-iterations" && i + 1 < argc) settings.max_iterations = std::strtoull(argv[++i], nullptr, 10);
     else if(a == "--recut-rounds" && i + 1 < argc) settings.recut_rounds = std::atoi(argv[++i]);
+    else if(a == "--proxy-faces" && i + 1 < argc) settings.proxy_faces = std::size_t(std::atol(argv[++i]));
     else if(a == "--time-limit" && i + 1 < argc)
     {
       settings.time_limit = std::atof(argv[++i]);

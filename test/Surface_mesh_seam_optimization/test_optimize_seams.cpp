@@ -1101,3 +1101,108 @@ BOOST_AUTO_TEST_CASE(the_e_sd_start_of_arap_counts_in_the_iteration_cap)
     if(cap == 30u) BOOST_TEST(r.result.status == SMSO::WARNING_MAXIMUM_ITERATIONS); // the E_SD start takes ~110
   }
 }
+
+// ---------------------------------------------------------------------------
+// Dense meshes through a proxy (proxy_number_of_faces)
+// ---------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(the_proxy_keeps_input_vertices_and_carries_a_valid_cut_and_map)
+{
+  namespace I = SMSO::internal;
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_DATA_DIR) + "/cat_f1500.obj", sm));
+  I::Cut_mesh full;
+  I::Face_graph_copy<Surface_mesh> copy;
+  std::string message;
+  BOOST_REQUIRE(I::copy_face_graph(sm, sm.points(), full, copy, message) == SMSO::OK);
+  I::Proxy proxy;
+  BOOST_REQUIRE(I::build_proxy(full, 400, proxy));
+  const I::Proxy_mesh& pm = proxy.mesh;
+  BOOST_TEST(pm.number_of_faces() <= 440u);
+  BOOST_TEST(pm.number_of_faces() >= 300u);
+  // same topology (Euler characteristic and border loops), every proxy vertex
+  // an input vertex at its place
+  long full_edges = 0, full_borders = 0, proxy_borders = 0;
+  for(std::size_t h = 0; h < full.opposite.size(); ++h)
+  {
+    full_edges += full.opposite[h] < 0 || full.opposite[h] > int(h);
+    full_borders += full.opposite[h] < 0;
+  }
+  for(auto h : pm.halfedges()) proxy_borders += pm.is_border(h);
+  BOOST_TEST(long(pm.number_of_vertices()) - long(pm.number_of_edges()) + long(pm.number_of_faces()) ==
+             long(full.number_of_vertices()) - full_edges + long(full.number_of_faces()));
+  BOOST_TEST(proxy_borders > 0);
+  BOOST_TEST(proxy_borders < full_borders);
+  std::set<int> used;
+  for(auto v : pm.vertices())
+  {
+    const int w = proxy.full_vertex[v.idx()];
+    BOOST_REQUIRE(w >= 0);
+    BOOST_TEST(used.insert(w).second);
+    BOOST_TEST(pm.point(v).x() == full.points[3*w]);
+    BOOST_TEST(pm.point(v).y() == full.points[3*w+1]);
+    BOOST_TEST(pm.point(v).z() == full.points[3*w+2]);
+  }
+
+  // seams and map on the proxy, carried to the mesh
+  auto puv = proxy.mesh.add_property_map<I::Proxy_mesh::Halfedge_index, I::Proxy_kernel::Point_2>("h:uv").first;
+  auto pseam = proxy.mesh.add_property_map<I::Proxy_mesh::Edge_index, bool>("e:seam", false).first;
+  const SMSO::Optimization_result coarse =
+    SMSO::optimize_seams(proxy.mesh, puv, SMSO_np::edge_is_seam_map(pseam).number_of_starts(1));
+  BOOST_REQUIRE(coarse.status == SMSO::OK);
+  double proxy_seam_length = 0;
+  for(auto e : pm.edges())
+    if(pseam[e]) proxy_seam_length += std::sqrt(CGAL::squared_distance(pm.point(pm.vertex(e, 0)), pm.point(pm.vertex(e, 1))));
+  BOOST_REQUIRE(proxy_seam_length > 0);
+
+  std::vector<char> seam;
+  std::vector<I::Carried_side> side;
+  I::transfer_seams(proxy, pseam, full, seam, side);
+  I::label_uv_vertices(full, seam);
+  // a path on the surface is no shorter than the chord it follows, and not much longer
+  const double carried = full.seam_length();
+  BOOST_TEST(carried >= proxy_seam_length * (1 - 1e-12));
+  BOOST_TEST(carried <= 1.5 * proxy_seam_length);
+  // the cut gives as many charts as the proxy's, each a disk
+  std::vector<int> chart;
+  const std::size_t charts = full.compute_charts(chart);
+  BOOST_TEST(charts == coarse.charts);
+  const std::vector<long> chi = I::chart_euler_characteristics(chart, charts, full.corner_uv, full.number_of_uv_vertices(),
+    full.opposite, [&](int h) { return full.opposite[h] < 0 || full.is_seam(h); });
+  for(long x : chi) BOOST_TEST(x == 1);
+
+  // the carried map: no flip, its border on the proxy's, and far less
+  // distortion than the default initial map of the same mesh
+  I::transfer_uv_map(proxy, puv, side, full);
+  for(std::size_t f = 0; f < full.number_of_faces(); ++f) BOOST_REQUIRE(full.signed_uv_area2(f) > 0);
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  I::write_uv_map(full, copy, uv);
+  const SMSO::Uv_map_measures carried_map = SMSO::measure_uv_map(sm, uv);
+  BOOST_TEST(carried_map.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(std::abs(carried_map.seam_length - carried) <= 1e-9 * carried);
+  auto default_seam = sm.add_property_map<edge_descriptor, bool>("e:default_seam", false).first;
+  BOOST_REQUIRE(SMSO::compute_initial_parameterization(sm, default_seam, uv) == SMSO::OK);
+  const SMSO::Uv_map_measures default_map = SMSO::measure_uv_map(sm, uv);
+  BOOST_TEST_MESSAGE("carried map E_SD " << carried_map.distortion << ", default initial map " << default_map.distortion
+                     << ", proxy result " << coarse.distortion);
+  BOOST_TEST(carried_map.distortion < 0.5 * default_map.distortion);
+}
+
+BOOST_AUTO_TEST_CASE(a_mesh_above_twice_the_proxy_size_goes_through_the_proxy)
+{
+  Run r;
+  run("cat_f1500.obj", r, SMSO_np::proxy_number_of_faces(400));
+  BOOST_TEST(r.result.status == SMSO::OK);
+  BOOST_TEST(r.result.proxy_faces > 0u);
+  BOOST_TEST(r.result.proxy_faces <= 440u);
+  BOOST_TEST(r.result.bound_met);
+  BOOST_TEST(r.result.distortion <= 4.1);
+  check_valid(r);
+  // not for a mesh at most twice as large, nor with options the proxy cannot carry
+  Run small;
+  run("cat_f1500.obj", small, SMSO_np::proxy_number_of_faces(750).number_of_starts(1));
+  BOOST_TEST(small.result.proxy_faces == 0u);
+  Run fixed;
+  run("cat_f1500.obj", fixed, SMSO_np::proxy_number_of_faces(400).seam_weight(0.1).number_of_starts(1));
+  BOOST_TEST(fixed.result.proxy_faces == 0u);
+}

@@ -66,6 +66,9 @@ struct Optimization_result
   /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts' dual
   /// step), 1 the second; the other figures are those of that start
   std::size_t start = 0;
+  /// faces of the simplified proxy the seams were optimized on before the mesh
+  /// itself (`proxy_number_of_faces`), 0 if none; the iterations and operations count both
+  std::size_t proxy_faces = 0;
   double seconds = 0;
   Optimization_timings timings;     ///< where the seconds went
 

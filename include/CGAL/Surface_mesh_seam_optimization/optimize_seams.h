@@ -11,6 +11,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_costs.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Multiresolution.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 
 #include <atomic>
@@ -144,6 +145,145 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     kept->write_seam_map(get_parameter(np, internal_np::edge_is_seam_map));
   result.seconds = timer.time();
   return result;
+}
+
+// A dense mesh: seams and map optimized on a proxy first, then carried to
+// the mesh, whose own run (one start, no recut rounds: the proxy's run did the
+// global search) has only local work left. Returns false (and leaves
+// `result` alone) when the proxy does not apply: the caller runs the mesh.
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                                  Optimization_result& result)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
+                                                 Symmetric_Dirichlet_energy()))> Energy;
+  typedef typename boost::property_traits<UVMap>::value_type Point_2;
+
+  const std::size_t proxy_faces = choose_parameter(get_parameter(np, internal_np::proxy_number_of_faces),
+                                                   default_proxy_number_of_faces);
+  // the options the proxy has no counterpart for (maps on the input's
+  // elements, a start given by the user, a fixed lambda) keep the direct run
+  if constexpr(!std::is_same_v<Energy, Symmetric_Dirichlet_energy> ||
+               !is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+    return false;
+  else
+  {
+    if(proxy_faces == 0 || num_faces(tm) <= 2 * proxy_faces) return false;
+    // seam costs other than 1 (maps of 1 change nothing)
+    auto all_one = [](const auto& range, const auto& map) {
+      for(const auto x : range) if(double(get(map, x)) != 1.) return false;
+      return true;
+    };
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::seam_cost_map_t>::value)
+      if(!all_one(edges(tm), get_parameter(np, internal_np::seam_cost_map))) return false;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
+      if(!all_one(edges(tm), get_parameter(np, internal_np::edge_seam_weight_map))) return false;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_seam_cost_map_t>::value)
+      if(!all_one(vertices(tm), get_parameter(np, internal_np::vertex_seam_cost_map))) return false;
+    if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
+       choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
+      return false;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+      for(auto e : edges(tm))
+        if(get(get_parameter(np, internal_np::edge_is_seam_map), e)) return false; // initial seams given
+
+    CGAL::Real_timer timer;
+    timer.start();
+    double bound = 0;
+    if(!read_distortion_bound(np, Symmetric_Dirichlet_energy(), bound, result.message)) return true;
+    double limit = std::numeric_limits<double>::infinity();
+    if(!read_time_limit(np, limit))
+    {
+      result.status = ERROR_WRONG_PARAMETER;
+      result.message = "time_limit must be positive";
+      return true;
+    }
+    const std::size_t cap = number_of_iterations_parameter(np, default_number_of_iterations);
+
+    Cut_mesh full;
+    Face_graph_copy<TriangleMesh> copy;
+    auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                get_const_property_map(CGAL::vertex_point, tm));
+    result.status = copy_face_graph(tm, vpm, full, copy, result.message);
+    if(result.status != OK) return true;
+    Proxy proxy;
+    if(!build_proxy(full, proxy_faces, proxy)) return false;
+
+    auto visitor_holder = visitor_parameter(np);
+    auto& visitor = unwrap_visitor(visitor_holder);
+    Proxy_mesh& pm = proxy.mesh;
+    auto proxy_uv = pm.add_property_map<Proxy_mesh::Halfedge_index, Proxy_kernel::Point_2>("h:uv").first;
+    auto proxy_seam = pm.add_property_map<Proxy_mesh::Edge_index, bool>("e:seam", false).first;
+    const Optimization_result coarse = optimize_seams_impl(
+      pm, proxy_uv,
+      parameters::distortion_bound(bound)
+        .bijective(choose_parameter(get_parameter(np, internal_np::bijective), true))
+        .number_of_starts(choose_parameter(get_parameter(np, internal_np::number_of_starts),
+                                           default_number_of_starts))
+        .number_of_recut_rounds(choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds),
+                                                 default_number_of_recut_rounds))
+        .number_of_iterations(cap)
+        .time_limit(limit)
+        .edge_is_seam_map(proxy_seam)
+        .visitor(std::ref(visitor)));
+    if(!coarse.has_result())
+    {
+      result = coarse;
+      result.proxy_faces = pm.number_of_faces();
+      result.message = "on the proxy of " + std::to_string(pm.number_of_faces()) + " faces: " + result.message;
+      return true;
+    }
+    // (a proxy run cut short by the visitor or the time limit goes on as far
+    // as the mesh's run is allowed: the visitor and the limit stop it too)
+
+    // the proxy's seams and map carried to the mesh
+    std::vector<char> seam;
+    std::vector<Carried_side> side;
+    transfer_seams(proxy, proxy_seam, full, seam, side);
+    label_uv_vertices(full, seam);
+    transfer_uv_map(proxy, proxy_uv, side, full);
+    auto start_uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), tm);
+    auto start_seam = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+    write_uv_map(full, copy, start_uv);
+    auto write_start_seams = [&] {
+      for(auto e : edges(tm)) put(start_seam, e, false);
+      for(std::size_t h = 0; h < seam.size(); ++h)
+        if(seam[h]) put(start_seam, edge(copy.corner_halfedge[h], tm), true);
+    };
+    write_start_seams();
+
+    const std::size_t left_iterations = cap > coarse.iterations ? cap - coarse.iterations : 0;
+    const double left_seconds = limit - timer.time();
+    auto fine_np = np.edge_is_seam_map(start_seam).number_of_starts(1).number_of_recut_rounds(0)
+                     .number_of_iterations(left_iterations).time_limit(left_seconds > 0 ? left_seconds : 1e-9);
+    Optimization_result fine = optimize_seams_impl(tm, start_uv, fine_np.use_uv_map_as_initial(true));
+    if(!fine.has_result() && fine.status != WARNING_CANCELLED)
+    {
+      // the carried map overlaps or folds beyond repair: the default initial
+      // map along the carried seams
+      const std::string why = fine.message;
+      write_start_seams();
+      fine = optimize_seams_impl(tm, start_uv, fine_np);
+      if(fine.has_result())
+        fine.message = "the map carried from the proxy was not usable (" + why + "): started from the " +
+                       "default map along its seams" + (fine.message.empty() ? "" : "; " + fine.message);
+    }
+    result = fine;
+    result.proxy_faces = pm.number_of_faces();
+    result.iterations += coarse.iterations;
+    result.topology_operations += coarse.topology_operations;
+    result.scaffold_rebuilds += coarse.scaffold_rebuilds;
+    result.seconds = timer.time();
+    if(!result.has_result()) return true;
+    for(auto h : halfedges(tm))
+      if(!is_border(h, tm)) put(uvmap, h, get(start_uv, h));
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+      for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(start_seam, e));
+    return true;
+  }
 }
 
 } // namespace internal
@@ -285,6 +425,18 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
 ///     \cgalParamType{`int` (any integral type), 1 or 2}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{proxy_number_of_faces}
+///     \cgalParamDescription{a mesh of more than twice this many faces is first simplified to a proxy of about
+///       this many faces (edge collapses that keep input vertices), whose seams and map are optimized with the
+///       settings above and carried to the mesh (seams along shortest paths, chart borders onto the proxy's,
+///       the rest by harmonic interpolation); the mesh's own run then starts from there, with one start and no
+///       recut rounds. Not with `seam_weight`, seam costs, `use_uv_map_as_initial`, initial seams in
+///       `edge_is_seam_map`, `EBCUTS` or an energy other than `Symmetric_Dirichlet_energy` (the mesh is then
+///       run directly). `Optimization_result::proxy_faces` gives the proxy's size; the iterations, operations,
+///       `number_of_iterations` and `time_limit` count both runs. 0 never uses a proxy}
+///     \cgalParamType{`std::size_t` (any integral type)}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{time_limit}
 ///     \cgalParamDescription{seconds (> 0) after which the run stops with the best result so far (in bound
 ///       mode the best one that met the bound, if any), status `WARNING_TIME_LIMIT`}
@@ -381,6 +533,7 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     }
   }
 
+  if(internal::optimize_seams_through_proxy(tm, uvmap, np, result)) return result;
   return internal::optimize_seams_impl(tm, uvmap, np);
 }
 

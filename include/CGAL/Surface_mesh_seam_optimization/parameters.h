@@ -59,7 +59,8 @@
   X(texture_size, number)                     \
   X(margin, number)                           \
   X(allow_rotation, flag)                     \
-  X(equal_texel_density, flag)
+  X(equal_texel_density, flag)               \
+  X(proxy_number_of_faces, count)
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {

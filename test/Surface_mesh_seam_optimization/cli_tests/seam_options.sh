@@ -28,6 +28,8 @@ usage_error "area term of '--energy conformal' only" --area-weight 0.1
 usage_error "area term of '--energy conformal' only" --area-weight 0.1 --energy arap
 usage_error "needs a number >= 0" --area-weight -1 --energy conformal
 usage_error "\[0, 1)" --seam-weight 1.5
+usage_error "applies to the distortion bound" --proxy-faces 400 --seam-weight 0.1
+usage_error "non-negative integer" --proxy-faces -3
 usage_error "\[0, 1)" --seam-weight -0.1
 usage_error "\[0, 1)" --seam-weight 1
 usage_error "exclusive" --distortion-bound 4.2 --seam-weight 0.1
@@ -101,5 +103,17 @@ a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 assert a["start"] == 0 and b["start"] == 1, (a["start"], b["start"])
 assert a["bound_met"] is True and b["bound_met"] is True, (a, b)
 assert b["seam_length_normalized"] < a["seam_length_normalized"], (a["seam_length_normalized"], b["seam_length_normalized"])
+PY
+# --proxy-faces: the cat (1499 faces) through a proxy of about 400 faces; the
+# result meets the bound without overlap, its report gives the proxy's size;
+# a mesh at most twice the proxy size runs directly.
+"$BIN" "$DATA/cat_f1500.obj" --proxy-faces 400 --quiet -o p.obj --report p.json || fail "--proxy-faces failed"
+"$BIN" "$DATA/cat_f1500.obj" --proxy-faces 750 --starts 1 --quiet -o p750.obj --report p750.json || fail "--proxy-faces 750 failed"
+python3 - p.json p750.json <<'PY' || fail "--proxy-faces not as expected"
+import json, sys
+a, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert 0 < a["proxy_faces"] <= 440, a["proxy_faces"]
+assert a["bound_met"] is True and a["e_sd"] <= 4.1 and a["bijective"] is True, a
+assert b["proxy_faces"] == 0, b["proxy_faces"]
 PY
 echo "ok"

@@ -27,6 +27,9 @@ constexpr int default_number_of_recut_rounds = 6;
 // Starts of optimize_seams() in bound mode, each with its own dual-step rule,
 // the shortest feasible result kept (named parameter number_of_starts).
 constexpr int default_number_of_starts = 2;
+// Seams of a mesh of more than twice this many faces are optimized on a proxy
+// of this many faces first (parameters::proxy_number_of_faces(); 0: never).
+constexpr std::size_t default_proxy_number_of_faces = 0;
 
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization

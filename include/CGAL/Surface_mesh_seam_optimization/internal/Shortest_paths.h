@@ -19,9 +19,11 @@ namespace internal {
 // distances; on_relax(u, w, arc) is called whenever w is reached more
 // cheaply, through `arc` from u. Ties are broken by vertex index, so the
 // result does not depend on anything but the graph.
-template <typename ForEachArc, typename OnRelax>
+// The search stops early once on_settle(u) returns true for a vertex u whose
+// distance is final (a target reached).
+template <typename ForEachArc, typename OnRelax, typename OnSettle>
 void dijkstra(const std::vector<int>& sources, std::vector<double>& dist,
-              const ForEachArc& for_each_arc, const OnRelax& on_relax)
+              const ForEachArc& for_each_arc, const OnRelax& on_relax, const OnSettle& on_settle)
 {
   typedef std::pair<double, int> Item;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
@@ -36,6 +38,7 @@ void dijkstra(const std::vector<int>& sources, std::vector<double>& dist,
     queue.pop();
     const int u = top.second;
     if(top.first > dist[u]) continue;
+    if(on_settle(u)) return;
     for_each_arc(u, [&](int w, double length, int arc) {
       const double d = top.first + length;
       if(d < dist[w])
@@ -46,6 +49,13 @@ void dijkstra(const std::vector<int>& sources, std::vector<double>& dist,
       }
     });
   }
+}
+
+template <typename ForEachArc, typename OnRelax>
+void dijkstra(const std::vector<int>& sources, std::vector<double>& dist,
+              const ForEachArc& for_each_arc, const OnRelax& on_relax)
+{
+  dijkstra(sources, dist, for_each_arc, on_relax, [](int) { return false; });
 }
 
 } // namespace internal
