@@ -260,7 +260,7 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
     auto fine_np = np.edge_is_seam_map(start_seam).number_of_starts(1).number_of_recut_rounds(0)
                      .number_of_iterations(left_iterations).time_limit(left_seconds > 0 ? left_seconds : 1e-9);
     Optimization_result fine = optimize_seams_impl(tm, start_uv, fine_np.use_uv_map_as_initial(true));
-    if(!fine.has_result() && fine.status != WARNING_CANCELLED)
+    if(!fine.has_result())
     {
       // the carried map overlaps or folds beyond repair: the default initial
       // map along the carried seams

@@ -47,7 +47,8 @@ typedef CGAL::Surface_mesh<Proxy_kernel::Point_3> Proxy_mesh;
 struct Proxy
 {
   Proxy_mesh mesh;
-  std::vector<int> full_vertex; // the input (core) vertex of each proxy vertex
+  std::vector<int> full_vertex;  // the input (core) vertex of each proxy vertex
+  std::vector<int> proxy_vertex; // the proxy vertex of each input vertex, -1 for none
 };
 
 // Keep a border endpoint where there is one: the proxy's border then runs
@@ -98,13 +99,11 @@ struct Shape_preserving_filter
       for(const auto h : CGAL::halfedges_around_target(v, tm))
       {
         if(CGAL::is_border(h, tm)) continue;
-        const auto f = face(h, tm);
         std::array<typename Profile::vertex_descriptor, 3> w = { target(h, tm), target(next(h, tm), tm),
                                                                  target(next(next(h, tm), tm), tm) };
         bool both = false;
         for(int i = 0; i < 3; ++i) if(w[i] == (v == v0 ? v1 : v0)) both = true;
         if(both) continue; // removed by the collapse
-        (void)f;
         std::array<Proxy_kernel::Point_3, 3> p, r;
         for(int i = 0; i < 3; ++i)
         {
@@ -167,7 +166,12 @@ inline bool build_proxy(const Cut_mesh& full, std::size_t target_faces, Proxy& p
                        .visitor(visitor));
   m.collect_garbage();
   proxy.full_vertex.assign(m.number_of_vertices(), -1);
-  for(const auto v : m.vertices()) proxy.full_vertex[v.idx()] = visitor.full[v];
+  proxy.proxy_vertex.assign(nv, -1);
+  for(const auto v : m.vertices())
+  {
+    proxy.full_vertex[v.idx()] = visitor.full[v];
+    proxy.proxy_vertex[visitor.full[v]] = int(v.idx());
+  }
   return true;
 }
 
@@ -257,9 +261,8 @@ void transfer_seams(const Proxy& proxy, ProxySeamMap proxy_seam, const Cut_mesh&
 
   // the input border: chains between consecutive proxy vertices, along the
   // proxy border halfedge between them (same orientation: faces on the left)
-  std::vector<int> proxy_vertex(nv, -1), border_out(nv, -1);
-  for(std::size_t i = 0; i < proxy.full_vertex.size(); ++i)
-    if(proxy.full_vertex[i] >= 0) proxy_vertex[proxy.full_vertex[i]] = int(i);
+  const std::vector<int>& proxy_vertex = proxy.proxy_vertex;
+  std::vector<int> border_out(nv, -1);
   for(std::size_t h = 0; h < nh; ++h)
     if(full.opposite[h] < 0) border_out[source_of(int(h))] = int(h);
   std::vector<int> chain;
@@ -353,9 +356,7 @@ void transfer_uv_map(const Proxy& proxy, ProxyUVMap proxy_uv, const std::vector<
   typedef Proxy_mesh::Halfedge_index Halfedge;
   const Proxy_mesh& m = proxy.mesh;
   const std::size_t nu = full.number_of_uv_vertices(), nv = full.number_of_vertices(), nc = full.corner_uv.size();
-  std::vector<int> proxy_vertex(nv, -1);
-  for(std::size_t i = 0; i < proxy.full_vertex.size(); ++i)
-    if(proxy.full_vertex[i] >= 0) proxy_vertex[proxy.full_vertex[i]] = int(i);
+  const std::vector<int>& proxy_vertex = proxy.proxy_vertex;
   std::vector<int> wedges_at(nv, 0);
   for(std::size_t u = 0; u < nu; ++u) ++wedges_at[full.uv_vertex[u]];
 
@@ -450,7 +451,7 @@ void transfer_uv_map(const Proxy& proxy, ProxyUVMap proxy_uv, const std::vector<
         fixed[u] = 0;
         freed = true;
       }
-    if(!freed && pass >= 2) break;
+    if(!freed && pass >= 2) return; // (solved with these fixed vertices already)
   }
   harmonic_interpolation(full, fixed);
   place_ears();
