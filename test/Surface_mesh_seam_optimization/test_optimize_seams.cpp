@@ -753,8 +753,11 @@ BOOST_AUTO_TEST_CASE(unit_seam_costs_change_nothing_and_invalid_ones_are_refused
   }
   BOOST_REQUIRE(ones.result.status == SMSO::OK);
   BOOST_TEST(ones.result.iterations == plain.result.iterations);
-  // the same seams, and the same map up to rounding (bit for bit in Release; the
-  // sanitizer build's -O1 code of the two instantiations may round differently)
+  // the same seams, and the same map up to rounding. Under the sanitizers the
+  // two instantiations' -O1 code rounds differently, and on one CI machine
+  // that difference grew over the Newton iterations into another placement
+  // of the same cut (UVs 0.32 apart, same seams and iteration count): there,
+  // the map is compared by its distortion.
   bool same_seams = true;
   for(edge_descriptor e : plain.sm.edges()) same_seams = same_seams && plain.seam[e] == ones.seam[e];
   BOOST_TEST(same_seams);
@@ -764,7 +767,14 @@ BOOST_AUTO_TEST_CASE(unit_seam_costs_change_nothing_and_invalid_ones_are_refused
     largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(plain.uv[h], ones.uv[h])));
     extent = (std::max)(extent, std::abs(plain.uv[h].x()) + std::abs(plain.uv[h].y()));
   }
+#if defined(__SANITIZE_ADDRESS__)
+  BOOST_TEST_MESSAGE("unit costs: largest UV difference " << largest << " of extent " << extent);
+  BOOST_TEST(ones.result.distortion == plain.result.distortion, boost::test_tools::tolerance(1e-3));
+  BOOST_TEST(ones.result.distortion <= 4.1);
+  check_valid(ones);
+#else
   BOOST_TEST(largest <= 1e-9 * extent);
+#endif
   BOOST_TEST(ones.result.seam_length_normalized == plain.result.seam_length_normalized,
              boost::test_tools::tolerance(1e-12));
 
@@ -1163,6 +1173,25 @@ BOOST_AUTO_TEST_CASE(the_proxy_keeps_input_vertices_and_carries_a_valid_cut_and_
   const double carried = full.seam_length();
   BOOST_TEST(carried >= proxy_seam_length * (1 - 1e-12));
   BOOST_TEST(carried <= 1.5 * proxy_seam_length);
+  // the carried paths neither touch nor share a stretch: each proxy seam
+  // vertex has its seam degree in the proxy, every other seam vertex 2
+  std::vector<int> degree(full.number_of_vertices(), 0), proxy_degree(pm.number_of_vertices(), 0);
+  for(std::size_t h = 0; h < seam.size(); ++h)
+    if(seam[h] && (full.opposite[h] < 0 || full.opposite[h] > int(h)))
+    {
+      ++degree[full.corner_vertex[h]];
+      ++degree[full.corner_vertex[I::Cut_mesh::prev(int(h))]];
+    }
+  for(auto e : pm.edges())
+    if(pseam[e]) { ++proxy_degree[pm.vertex(e, 0).idx()]; ++proxy_degree[pm.vertex(e, 1).idx()]; }
+  std::size_t wrong_degree = 0;
+  for(std::size_t v = 0; v < degree.size(); ++v)
+  {
+    const int p = proxy.proxy_vertex[v];
+    if(p >= 0 && proxy_degree[p] > 0) wrong_degree += degree[v] != proxy_degree[p];
+    else wrong_degree += degree[v] != 0 && degree[v] != 2;
+  }
+  BOOST_TEST(wrong_degree == 0u);
   // the cut gives as many charts as the proxy's, each a disk
   std::vector<int> chart;
   const std::size_t charts = full.compute_charts(chart);
@@ -1205,4 +1234,21 @@ BOOST_AUTO_TEST_CASE(a_mesh_above_twice_the_proxy_size_goes_through_the_proxy)
   Run fixed;
   run("cat_f1500.obj", fixed, SMSO_np::proxy_number_of_faces(400).seam_weight(0.1).number_of_starts(1));
   BOOST_TEST(fixed.result.proxy_faces == 0u);
+}
+
+// The fallback: bunny through a proxy of about 3333 faces (one start) comes
+// back with one folded triangle that untangling cannot remove; the mesh is
+// then optimized as without a proxy. (When carried maps become valid by
+// construction, this case needs another way to reach the fallback.)
+BOOST_AUTO_TEST_CASE(a_carried_map_that_keeps_a_fold_gives_way_to_the_direct_run)
+{
+  Run r;
+  run("bunny_i_f10000.obj", r, SMSO_np::proxy_number_of_faces(3333).number_of_starts(1));
+  BOOST_TEST(r.result.status == SMSO::OK);
+  BOOST_TEST(r.result.proxy_faces == 0u);
+  BOOST_TEST_MESSAGE("message: " << r.result.message);
+  BOOST_TEST(r.result.message.find("folded triangles: optimized without it") != std::string::npos);
+  BOOST_TEST(r.result.bound_met);
+  BOOST_TEST(r.result.distortion <= 4.1);
+  check_valid(r);
 }

@@ -5,7 +5,8 @@
 // place each collapsed edge's vertex at one of its endpoints, so that every
 // proxy vertex is an input vertex. The seams optimized on the proxy are carried
 // to the input along shortest paths between the input vertices of each proxy
-// seam edge, and the proxy's UV map by closest-point projection; the input's
+// seam edge that do not touch each other, and the proxy's UV map with the
+// chart borders on the proxy's and the rest interpolated; the input's
 // optimization starts from there, where only local work is left.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_MULTIRESOLUTION_H
@@ -186,8 +187,10 @@ struct Carried_side
 
 // Per input halfedge (both sides): the proxy's seam edges carried to the
 // input, each along the shortest input path between the input vertices of
-// its ends; `side` gets where each halfedge of these paths and of the input
-// border lies in the proxy (the first path where several share an edge).
+// its ends that keeps off the paths found before, the input border and the
+// other proxy seam vertices (the plain shortest path where there is none);
+// `side` gets where each halfedge of these paths and of the input border
+// lies in the proxy.
 template <typename ProxySeamMap>
 void transfer_seams(const Proxy& proxy, ProxySeamMap proxy_seam, const Cut_mesh& full, std::vector<char>& seam,
                     std::vector<Carried_side>& side)
@@ -221,28 +224,54 @@ void transfer_seams(const Proxy& proxy, ProxySeamMap proxy_seam, const Cut_mesh&
     side[h].t_source = ts;
     side[h].t_target = tt;
   };
+  // Paths may not touch each other, the input border or a proxy seam vertex
+  // but at their own ends: two paths that share a stretch would pinch the
+  // chart between them (a branch where the proxy has none).
+  std::vector<char> blocked(nv, 0);
+  std::vector<Proxy_mesh::Edge_index> seam_edges;
+  for(const auto e : m.edges())
+    if(get(proxy_seam, e))
+    {
+      seam_edges.push_back(e);
+      blocked[proxy.full_vertex[m.vertex(e, 0).idx()]] = blocked[proxy.full_vertex[m.vertex(e, 1).idx()]] = 1;
+    }
+  for(std::size_t h = 0; h < nh; ++h)
+    if(full.opposite[h] < 0) blocked[full.corner_vertex[h]] = blocked[source_of(int(h))] = 1;
+  // short edges first: they have the fewest ways around what is blocked
+  auto chord2 = [&](Proxy_mesh::Edge_index e) {
+    return CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)));
+  };
+  std::stable_sort(seam_edges.begin(), seam_edges.end(),
+                   [&](auto x, auto y) { return chord2(x) < chord2(y); });
+
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> dist(nv, inf);
   std::vector<int> reached_by(nv, -1), touched;
-  for(const auto e : m.edges())
+  for(const auto e : seam_edges)
   {
-    if(!get(proxy_seam, e)) continue;
     const auto hp = m.halfedge(e), op = m.opposite(hp);
     const int a = proxy.full_vertex[m.source(hp).idx()];
     const int b = proxy.full_vertex[m.target(hp).idx()];
-    touched.clear();
-    touched.push_back(a);
-    dijkstra(std::vector<int>(1, a), dist,
-             [&](int u, const auto& visit) {
-               for(int k = start[u]; k < start[u + 1]; ++k)
-                 visit(arc_to[k], full.edge_length(arc_halfedge[k]), k);
-             },
-             [&](int, int w, int k) { reached_by[w] = k; touched.push_back(w); },
-             [&](int u) { return u == b; });
+    // (a path blocked everywhere takes the shortest way regardless)
+    for(const bool avoid : {true, false})
+    {
+      for(int v : touched) { dist[v] = inf; reached_by[v] = -1; }
+      touched.assign(1, a);
+      dijkstra(std::vector<int>(1, a), dist,
+               [&](int u, const auto& visit) {
+                 for(int k = start[u]; k < start[u + 1]; ++k)
+                   if(!avoid || !blocked[arc_to[k]] || arc_to[k] == b)
+                     visit(arc_to[k], full.edge_length(arc_halfedge[k]), k);
+               },
+               [&](int, int w, int k) { reached_by[w] = k; touched.push_back(w); },
+               [&](int u) { return u == b; });
+      if(dist[b] < inf) break;
+    }
     const double length = dist[b];
     if(length < inf && length > 0)
       for(int v = b; v != a;)
       {
+        blocked[v] = 1;
         const int h = arc_halfedge[reached_by[v]];
         const int o = full.opposite[h];
         seam[h] = 1;
@@ -256,8 +285,8 @@ void transfer_seams(const Proxy& proxy, ProxySeamMap proxy_seam, const Cut_mesh&
         else { set_side(h, op, 1 - tv, 1 - tu); set_side(o, hp, tu, tv); }
         v = u;
       }
-    for(int v : touched) { dist[v] = inf; reached_by[v] = -1; }
   }
+  for(int v : touched) { dist[v] = inf; reached_by[v] = -1; }
 
   // the input border: chains between consecutive proxy vertices, along the
   // proxy border halfedge between them (same orientation: faces on the left)
