@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Multiresolution.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -250,10 +251,9 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
     // in what is left. (The default map along the carried cut was a poor
     // start: on lucy_o_f24136, 58 to 77 charts and seams 2.9 to 3.5 times the
     // direct run's.)
+    auto seconds_left = [&] { return (std::max)(limit - timer.time(), 1e-9); };
     auto run_directly = [&](const std::string& why) {
-      const double left = limit - timer.time();
-      result = optimize_seams_impl(tm, uvmap, np.number_of_iterations(left_iterations)
-                                                .time_limit(left > 0 ? left : 1e-9));
+      result = optimize_seams_impl(tm, uvmap, np.number_of_iterations(left_iterations).time_limit(seconds_left()));
       result.iterations += coarse.iterations;
       result.seconds = timer.time();
       const std::string note = "the map carried from a proxy of " + std::to_string(pm.number_of_faces()) +
@@ -266,17 +266,13 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
     auto start_uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), tm);
     auto start_seam = get(CGAL::dynamic_edge_property_t<bool>(), tm);
     write_uv_map(full, copy, start_uv);
-    auto write_start_seams = [&] {
-      for(auto e : edges(tm)) put(start_seam, e, false);
-      for(std::size_t h = 0; h < seam.size(); ++h)
-        if(seam[h]) put(start_seam, edge(copy.corner_halfedge[h], tm), true);
-    };
-    write_start_seams();
+    for(auto e : edges(tm)) put(start_seam, e, false);
+    for(std::size_t h = 0; h < seam.size(); ++h)
+      if(seam[h]) put(start_seam, edge(copy.corner_halfedge[h], tm), true);
 
-    const double left_seconds = limit - timer.time();
-    auto fine_np = np.edge_is_seam_map(start_seam).number_of_starts(1).number_of_recut_rounds(0)
-                     .number_of_iterations(left_iterations).time_limit(left_seconds > 0 ? left_seconds : 1e-9);
-    Optimization_result fine = optimize_seams_impl(tm, start_uv, fine_np.use_uv_map_as_initial(true));
+    Optimization_result fine = optimize_seams_impl(
+      tm, start_uv, np.edge_is_seam_map(start_seam).number_of_starts(1).number_of_recut_rounds(0)
+                      .number_of_iterations(left_iterations).time_limit(seconds_left()).use_uv_map_as_initial(true));
     if(!fine.has_result()) return run_directly("was not usable (" + fine.message + ")");
     result = fine;
     result.proxy_faces = pm.number_of_faces();
@@ -284,7 +280,6 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
     result.topology_operations += coarse.topology_operations;
     result.scaffold_rebuilds += coarse.scaffold_rebuilds;
     result.seconds = timer.time();
-    if(!result.has_result()) return true;
     for(auto h : halfedges(tm))
       if(!is_border(h, tm)) put(uvmap, h, get(start_uv, h));
     if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
