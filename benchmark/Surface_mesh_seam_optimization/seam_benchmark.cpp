@@ -42,6 +42,7 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <sys/resource.h>
@@ -138,12 +139,20 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
                                        SMSO_np::number_of_iterations(settings.max_iterations),
                                        SMSO_np::number_of_recut_rounds(settings.recut_rounds),
                                        SMSO_np::proxy_number_of_faces(settings.proxy_faces),
-                                       SMSO_np::edge_is_seam_map(seams),
-                                       SMSO_np::sparse_linear_solver(SolverTraits()));
-  if(settings.distortion_only)
-    return SMSO::minimize_distortion(sm, uv, SMSO_np::combine(common, SMSO_np::use_uv_map_as_initial(true)));
-  return SMSO::optimize_seams(sm, uv, SMSO_np::combine(common, SMSO_np::bijective(settings.bijective),
-                                                       SMSO_np::visitor(std::ref(visitor))));
+                                       SMSO_np::edge_is_seam_map(seams));
+  auto run = [&](const auto& np) {
+    if(settings.distortion_only)
+      return SMSO::minimize_distortion(sm, uv, SMSO_np::combine(np, SMSO_np::use_uv_map_as_initial(true)));
+    return SMSO::optimize_seams(sm, uv, SMSO_np::combine(np, SMSO_np::bijective(settings.bijective),
+                                                         SMSO_np::visitor(std::ref(visitor))));
+  };
+  // The default solver is not passed: the two starts then get a solver each
+  // and run side by side, as for a user who does not choose one (copies of a
+  // given solver share its factorization, so its starts take turns).
+  if constexpr(std::is_same_v<SolverTraits, SMSO::Default_sparse_solver_traits>)
+    return run(common);
+  else
+    return run(SMSO_np::combine(common, SMSO_np::sparse_linear_solver(SolverTraits())));
 }
 
 static Row run(const std::string& file, const Settings& settings)

@@ -19,20 +19,24 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Stale_factor_cg.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
 
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -417,6 +421,164 @@ BOOST_AUTO_TEST_CASE(flip_free_step_is_tight_and_newton_never_flips)
   }
   // A flat patch is developable: the optimum is an isometry.
   BOOST_TEST(std::abs(newton.energy() - 4.) < 1e-6);
+}
+
+BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newton_step)
+{
+  // SPD matrices with a mesh's pattern (2 unknowns per vertex): a weighted
+  // graph Laplacian plus a positive diagonal; the new one's weights differ
+  // from the factorized one's by up to 20%.
+  Surface_mesh sm = planar_grid(12, 5);
+  const int n = int(2 * num_vertices(sm));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(0.5, 2.), jitter(0.8, 1.2);
+  std::vector<std::pair<int, int> > edges_uv;
+  std::vector<double> w;
+  for(auto e : edges(sm))
+  {
+    edges_uv.emplace_back(int(source(halfedge(e, sm), sm)), int(target(halfedge(e, sm), sm)));
+    w.push_back(U(rng));
+  }
+  auto matrix = [&](const std::vector<double>& weight, double shift) {
+    std::vector<Eigen::Triplet<double> > t;
+    for(int d = 0; d < n; ++d) t.emplace_back(d, d, shift);
+    for(std::size_t k = 0; k < edges_uv.size(); ++k)
+      for(int c = 0; c < 2; ++c)
+      {
+        const int a = 2 * edges_uv[k].first + c, b = 2 * edges_uv[k].second + c;
+        t.emplace_back(a, a, weight[k]);
+        t.emplace_back(b, b, weight[k]);
+        t.emplace_back((std::max)(a, b), (std::min)(a, b), -weight[k]);
+      }
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  };
+  const Eigen::SparseMatrix<double> A_old = matrix(w, 1e-2);
+  std::vector<double> w_new = w;
+  for(double& x : w_new) x *= jitter(rng);
+  const Eigen::SparseMatrix<double> A_new = matrix(w_new, 1e-2);
+  Eigen::VectorXd b(n);
+  for(int i = 0; i < n; ++i) b[i] = std::sin(0.37 * i);
+
+  SMSO::Eigen_simplicial_ldlt_traits fresh, stale;
+  BOOST_REQUIRE(fresh.analyze_pattern(A_new) && fresh.factorize(A_new));
+  Eigen::VectorXd exact;
+  BOOST_REQUIRE(fresh.solve(b, exact));
+  BOOST_REQUIRE(stale.analyze_pattern(A_old) && stale.factorize(A_old));
+
+  // the factor of the same matrix: converged before any iteration
+  Eigen::VectorXd x;
+  SMSO::internal::Stale_factor_cg_result r =
+    SMSO::internal::stale_factor_cg(A_new, fresh, b, x, 1e-10, 6);
+  BOOST_TEST(r.converged);
+  BOOST_TEST(r.iterations == 0);
+
+  // a stale factor: the new matrix's solution to the tolerance, in a few iterations
+  r = SMSO::internal::stale_factor_cg(A_new, stale, b, x, 1e-10, 50);
+  BOOST_REQUIRE(r.converged);
+  BOOST_TEST(r.iterations > 0);
+  BOOST_TEST(r.iterations < 30);
+  const Eigen::VectorXd residual = b - A_new.selfadjointView<Eigen::Lower>() * x;
+  BOOST_TEST(residual.norm() <= 1e-10 * b.norm());
+  BOOST_TEST((x - exact).norm() <= 1e-7 * exact.norm());
+  // (the stale factor alone is off by far more than that)
+  Eigen::VectorXd plain;
+  BOOST_REQUIRE(stale.solve(b, plain));
+  BOOST_TEST((plain - exact).norm() > 1e-3 * exact.norm());
+
+  // the factor of a very different matrix: given up, not a wrong answer
+  std::vector<double> w_far = w;
+  for(std::size_t k = 0; k < w_far.size(); ++k) w_far[k] *= (k % 2 ? 100. : 0.01);
+  const Eigen::SparseMatrix<double> A_far = matrix(w_far, 1e-2);
+  r = SMSO::internal::stale_factor_cg(A_far, stale, b, x, 1e-8, 6);
+  BOOST_TEST(!r.converged);
+  BOOST_TEST(r.iterations <= 6);
+}
+
+BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_fewer_factorizations)
+{
+  // A curved patch (not developable) from a strongly distorted start.
+  Surface_mesh sm = planar_grid(12, 9);
+  for(auto v : vertices(sm))
+  {
+    const Point_3 p = sm.point(v);
+    sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
+  }
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = 2. * p[0] + 0.1 * std::sin(p[1]);
+    cm.uv[2*u+1] = 0.5 * p[1];
+  }
+  const SMSO::Symmetric_Dirichlet_energy energy;
+  auto run = [&](int stale_iterations, std::size_t& iterations, std::size_t& factorizations) {
+    Cut_mesh c = cm;
+    SMSO::internal::Newton_settings settings;
+    settings.stale_factor_iterations = stale_iterations;
+    settings.relative_decrease_tolerance = 1e-12;
+    SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
+      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
+    BOOST_REQUIRE(newton.rebuild_pattern());
+    double previous = newton.energy();
+    for(int it = 0; it < 200; ++it)
+    {
+      const auto status = newton.step();
+      BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
+      BOOST_TEST(newton.energy() <= previous * (1 + 1e-14)); // (rounding at the minimum)
+      previous = newton.energy();
+      if(status == SMSO::internal::NEWTON_CONVERGED) break;
+    }
+    for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
+    iterations = newton.iterations();
+    factorizations = newton.factorizations();
+    return newton.energy();
+  };
+  std::size_t it_exact = 0, f_exact = 0, it_stale = 0, f_stale = 0;
+  const double e_exact = run(0, it_exact, f_exact);
+  const double e_stale = run(6, it_stale, f_stale);
+  BOOST_TEST(f_exact == it_exact); // a factorization per iteration
+  BOOST_TEST(e_exact > 4. + 1e-4); // curved: no isometry
+  BOOST_TEST(std::abs(e_stale - e_exact) <= 1e-8 * e_exact);
+  BOOST_TEST(f_stale < it_stale); // some steps reused the last factorization
+  BOOST_TEST(f_stale < f_exact);
+}
+
+BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)
+{
+  // the first start does 37 iterations; the second may do 2 x 37, however
+  // the two threads interleave (the first slow, the second slow, or neither)
+  for(int schedule = 0; schedule < 3; ++schedule)
+  {
+    SMSO::internal::Iteration_budget budget(2.);
+    std::size_t second_iterations = 0;
+    std::thread second([&] {
+      while(budget.second_may_go(second_iterations + 1))
+      {
+        ++second_iterations;
+        if(schedule == 1) std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+    });
+    for(int i = 0; i < 37; ++i)
+    {
+      budget.first_iterated();
+      if(schedule == 2) std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    budget.first_done();
+    second.join();
+    BOOST_TEST(second_iterations == 74u);
+  }
+  // one after the other (no TBB, or a solver shared by the starts)
+  SMSO::internal::Iteration_budget budget(2.);
+  for(int i = 0; i < 5; ++i) budget.first_iterated();
+  budget.first_done();
+  BOOST_TEST(budget.second_may_go(10));
+  BOOST_TEST(!budget.second_may_go(11));
 }
 
 template <typename Mesh>

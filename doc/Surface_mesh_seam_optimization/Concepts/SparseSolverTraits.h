@@ -11,8 +11,13 @@ its gradient.
 The work is split in three steps so that the symbolic analysis (fill-reducing
 ordering, elimination tree) is done once per sparsity pattern and reused by
 every Newton iteration until the UV topology changes:
-`analyze_pattern()` when the pattern is new, `factorize()` at every iteration,
-then `solve()` with one or more right-hand sides.
+`analyze_pattern()` when the pattern is new, `factorize()` when the Hessian
+changed too much since the last factorization, then `solve()` with one or
+more right-hand sides. Between two factorizations, the Newton step is found
+by conjugate gradients preconditioned by `solve()` with the last
+factorization (of an earlier Hessian of the same pattern): `solve()` must
+keep using that factorization, whatever became of the matrix it was
+computed from.
 
 The matrix is symmetric and only its lower triangle (row index >= column
 index, diagonal included) is stored: a model must read that triangle, as

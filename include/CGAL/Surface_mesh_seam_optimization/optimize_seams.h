@@ -87,7 +87,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   typedef Seam_optimizer<TriangleMesh, Energy, Solver, Visitor> Optimizer;
   typedef internal::Seam_optimizer_access Access;
   std::atomic<bool> stop(false);
-  Visitor first_visitor(&visitor, stop), second_visitor(nullptr, stop);
+  internal::Iteration_budget budget(internal::second_start_iteration_factor);
+  Visitor first_visitor(&visitor, stop, &budget, true), second_visitor(nullptr, stop, &budget, false);
   // one place runs the optimization and fills the result: Seam_optimizer
   std::unique_ptr<Optimizer> first = Access::set_up<Optimizer>(tm, uvmap, first_visitor, np);
   // Bound mode: a second start from the same setup, whose dual step holds the
@@ -104,7 +105,11 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     second = Access::copy_setup(*first, second_visitor,
                                 choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver()),
                                 internal::HOLD_PRICE_WHILE_PAYING);
-  auto run_first = [&] { Access::begin(*first); first->run(); };
+  auto run_first = [&] {
+    struct Done { internal::Iteration_budget& b; ~Done() { b.first_done(); } } done{budget}; // (even on an exception)
+    Access::begin(*first);
+    first->run();
+  };
   auto run_second = [&] { Access::begin(*second); second->run(); };
   if(second && !shared_solver)
     internal::run_side_by_side(run_first, run_second, stop);
@@ -127,6 +132,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       kept = second.get();
       result = std::move(other);
       result.start = 1;
+      // (its iteration budget stopped it, not the user)
+      if(result.status == WARNING_CANCELLED) result.status = OK;
     }
   }
   // the time limit that cut either start short cut the call short: the kept
@@ -420,7 +427,9 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///       on a tie, or when neither does); they run in parallel when TBB is linked, each with its own
 ///       `number_of_iterations` and `time_limit`, and the result does not depend on the number of threads
 ///       (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are: the starts
-///       then run one after the other).
+///       then run one after the other). The second start does at most twice the first's Newton
+///       iterations (then its best result so far competes), so that the call takes at most about twice one
+///       start's time, whatever the schedule.
 ///       1 runs the first alone (half the work, seams longer on some meshes). The visitor is called by the
 ///       first start only, from the calling thread; when it stops the run, both starts stop and the first's
 ///       result is kept (`Optimization_result::start` says which start the result comes from)}

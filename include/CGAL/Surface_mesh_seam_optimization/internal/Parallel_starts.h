@@ -15,21 +15,74 @@
 #endif
 
 #include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <mutex>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
+// The second start's effort is bounded by the first's: it does at most
+// `factor` times the first start's Newton iterations, so that the call,
+// which waits for both, takes at most about that many times one start.
+// Deterministic whatever the schedule: while the first start runs, the
+// second waits whenever it would get ahead of `factor` times the first's
+// count so far, and once the first is done the bound is final.
+class Iteration_budget
+{
+public:
+  explicit Iteration_budget(double factor) : m_factor(factor) {}
+
+  void first_iterated()
+  {
+    { std::lock_guard<std::mutex> lock(m_mutex); ++m_first; }
+    m_changed.notify_all();
+  }
+  void first_done()
+  {
+    { std::lock_guard<std::mutex> lock(m_mutex); m_done = true; }
+    m_changed.notify_all();
+  }
+  // whether the second start may do its n-th iteration
+  bool second_may_go(std::size_t n)
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_changed.wait(lock, [&] { return m_done || within(n); });
+    return within(n);
+  }
+
+private:
+  bool within(std::size_t n) const { return double(n) <= m_factor * double(m_first); }
+
+  double m_factor;
+  std::mutex m_mutex;
+  std::condition_variable m_changed;
+  std::size_t m_first = 0;
+  bool m_done = false;
+};
+
 // The visitor of one start: the user's visitor for the start run on the
 // calling thread (so that it is never called from another thread), none for
-// the others. A stop asked by the user's visitor stops every start.
+// the others. A stop asked by the user's visitor stops every start. With a
+// budget, the first start reports its iterations to it and the second
+// stops (alone) when it is spent.
 template <typename Visitor>
 class Start_visitor
 {
 public:
-  Start_visitor(Visitor* user, std::atomic<bool>& stop) : m_user(user), m_stop(stop) {}
+  Start_visitor(Visitor* user, std::atomic<bool>& stop, Iteration_budget* budget = nullptr, bool first = true)
+    : m_user(user), m_stop(stop), m_budget(budget), m_first(first) {}
 
-  bool on_iteration(const Seam_optimization_progress& p) { return go(!m_user || m_user->on_iteration(p)); }
+  bool on_iteration(const Seam_optimization_progress& p)
+  {
+    if(m_budget)
+    {
+      if(m_first) m_budget->first_iterated();
+      else if(!m_budget->second_may_go(++m_iterations)) return false;
+    }
+    return go(!m_user || m_user->on_iteration(p));
+  }
   bool on_topology_operation(const Seam_optimization_progress& p)
   {
     return go(!m_user || m_user->on_topology_operation(p));
@@ -45,6 +98,9 @@ private:
 
   Visitor* m_user;
   std::atomic<bool>& m_stop;
+  Iteration_budget* m_budget;
+  bool m_first;
+  std::size_t m_iterations = 0;
 };
 
 // Runs first() on the calling thread and second() beside it. Each works on
