@@ -75,6 +75,17 @@ Surface_mesh planar_grid(int n, unsigned seed, double amplitude = 0.25)
 }
 
 // The cut mesh of the flat 9 x 9 unit grid, cut along paths of grid points.
+// sm copied into a cut mesh as one chart (no seam); the caller sets its UVs.
+Cut_mesh one_chart(const Surface_mesh& sm)
+{
+  Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::string msg;
+  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
+  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  return cm;
+}
+
 struct Grid_cut
 {
   SMSO::internal::Cut_mesh cm;
@@ -370,11 +381,7 @@ BOOST_AUTO_TEST_CASE(flip_free_step_is_tight_and_newton_never_flips)
   // Jittered grid, UV = positions plus a small smooth distortion: random
   // directions must be cut exactly where the first triangle degenerates.
   Surface_mesh sm = planar_grid(10, 2);
-  SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
-  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  SMSO::internal::Cut_mesh cm = one_chart(sm);
   for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
   {
     const double* p = &cm.points[3 * cm.uv_vertex[u]];
@@ -505,11 +512,7 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
     const Point_3 p = sm.point(v);
     sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
   }
-  SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
-  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  SMSO::internal::Cut_mesh cm = one_chart(sm);
   for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
   {
     const double* p = &cm.points[3 * cm.uv_vertex[u]];
@@ -917,11 +920,7 @@ BOOST_AUTO_TEST_CASE(a_chart_that_overlaps_itself_is_cut_between_the_overlapping
     sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
     sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
   }
-  Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::string msg;
-  BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
-  SMSO::internal::label_uv_vertices(cm, std::vector<char>(cm.corner_vertex.size(), 0));
+  Cut_mesh cm = one_chart(sm);
   const double pi = 3.14159265358979323846;
   for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
   {

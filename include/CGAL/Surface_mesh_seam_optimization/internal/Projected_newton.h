@@ -157,7 +157,7 @@ public:
     load();
     m_energy_value = total_energy(m_cm, m_energy, m_x.data());
     m_objective = m_energy_value + (has_scaffold() ? m_scaffold->energy(m_x.data()) : 0.);
-    m_factorized = false;
+    m_reuse_factor = false;
     return m_solver.analyze_pattern(m_H);
   }
 
@@ -190,14 +190,13 @@ public:
 
     Phase_timer factorization(m_timings.factorization);
     Eigen::VectorXd rhs = -m_gradient;
-    const bool inexact = m_factorized && !m_refactorize && m_settings.stale_factor_iterations > 0 &&
+    const bool inexact = m_reuse_factor && m_settings.stale_factor_iterations > 0 &&
                          stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
                                          m_settings.stale_factor_iterations).converged;
-    m_refactorize = false;
     if(!inexact)
     {
       if(!m_solver.factorize(m_H)) return NEWTON_SOLVER_FAILED;
-      m_factorized = true;
+      m_reuse_factor = true;
       ++m_factorizations;
       if(!m_solver.solve(rhs, m_direction)) return NEWTON_SOLVER_FAILED;
     }
@@ -228,7 +227,7 @@ public:
     // Only an exact step decides that the iterate is stationary: a stalled
     // inexact one would stop the descent short of the stationary point
     // (higher E_SD at the topology step: more cuts, measured).
-    auto stalled = [this] { m_refactorize = true; return NEWTON_PROGRESS; };
+    auto stalled = [this] { m_reuse_factor = false; return NEWTON_PROGRESS; };
     if(!(e < e0))
     {
       m_last_step = 0; m_last_decrease = 0;
@@ -374,7 +373,7 @@ private:
   std::vector<double> m_trial;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
-  bool m_factorized = false, m_refactorize = false;
+  bool m_reuse_factor = false; // the last factorization may precondition the next step (same pattern, no stall since)
   std::size_t m_factorizations = 0;
   Optimization_timings m_timings;
 };
