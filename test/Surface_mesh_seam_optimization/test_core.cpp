@@ -74,7 +74,6 @@ Surface_mesh planar_grid(int n, unsigned seed, double amplitude = 0.25)
   return sm;
 }
 
-// The cut mesh of the flat 9 x 9 unit grid, cut along paths of grid points.
 // sm copied into a cut mesh as one chart (no seam); the caller sets its UVs.
 Cut_mesh one_chart(const Surface_mesh& sm)
 {
@@ -86,6 +85,7 @@ Cut_mesh one_chart(const Surface_mesh& sm)
   return cm;
 }
 
+// The cut mesh of the flat 9 x 9 unit grid, cut along paths of grid points.
 struct Grid_cut
 {
   SMSO::internal::Cut_mesh cm;
