@@ -20,6 +20,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold_mesher.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
@@ -428,6 +430,97 @@ BOOST_AUTO_TEST_CASE(flip_free_step_is_tight_and_newton_never_flips)
   }
   // A flat patch is developable: the optimum is an isometry.
   BOOST_TEST(std::abs(newton.energy() - 4.) < 1e-6);
+}
+
+// The Hessian's pattern, built column by column from the vertices' blocks,
+// is the one of the elements' triplets (charts and scaffold); the ordering
+// of the UV vertices' 2x2 blocks keeps each block's two unknowns together,
+// fills the factor about as AMD on the unknowns does and solves alike.
+BOOST_AUTO_TEST_CASE(the_hessian_pattern_and_the_ordering_of_uv_vertices)
+{
+  Grid_cut g;
+  std::vector<std::pair<int, int> > path;
+  for(int i = 0; i <= 5; ++i) path.emplace_back(i, 4);
+  g.cut_along(path);
+  for(std::size_t v = 0; v < g.cm.number_of_vertices(); ++v)
+  {
+    double* p = &g.cm.points[3*v];
+    p[2] = 0.04 * (p[0] - 4) * (p[0] - 4) - 0.03 * (p[1] - 4) * (p[1] - 4);
+  }
+  g.cm.compute_rest_shape();
+  for(std::size_t u = 0; u < g.cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &g.cm.points[3 * g.cm.uv_vertex[u]];
+    g.cm.uv[2*u] = p[0];
+    g.cm.uv[2*u+1] = p[1];
+  }
+  // the slit's two sides apart, so that a scaffold can be meshed around the chart
+  for(std::size_t c = 0; c < g.cm.corner_uv.size(); ++c)
+  {
+    const int f = int(c / 3), u = g.cm.corner_uv[c];
+    double y = 0;
+    for(int k = 0; k < 3; ++k) y += g.cm.points[3 * g.cm.corner_vertex[3*f + k] + 1] / 3;
+    const double* p = &g.cm.points[3 * g.cm.uv_vertex[u]];
+    if(p[1] == 4 && p[0] < 5) g.cm.uv[2*u+1] = 4 + (y > 4 ? 0.2 : -0.2) * (1 - p[0] / 5);
+  }
+  for(std::size_t f = 0; f < g.cm.number_of_faces(); ++f) BOOST_REQUIRE(g.cm.signed_uv_area2(f) > 0);
+  SMSO::internal::Scaffold scaffold;
+  BOOST_REQUIRE(scaffold.build(g.cm));
+  BOOST_REQUIRE(scaffold.number_of_triangles() > 0);
+
+  const SMSO::Symmetric_Dirichlet_energy energy;
+  SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
+    newton(g.cm, energy, SMSO::Eigen_simplicial_ldlt_traits());
+  newton.set_scaffold(&scaffold);
+  BOOST_REQUIRE(newton.rebuild_pattern());
+  BOOST_REQUIRE(newton.step() != SMSO::internal::NEWTON_SOLVER_FAILED);
+  const Eigen::SparseMatrix<double>& H = newton.hessian();
+
+  std::vector<int> tri = g.cm.corner_uv;
+  tri.insert(tri.end(), scaffold.tri.begin(), scaffold.tri.end());
+  const int n = int(2 * (g.cm.number_of_uv_vertices() + scaffold.pos.size() / 2));
+  BOOST_REQUIRE_EQUAL(H.rows(), n);
+  std::vector<Eigen::Triplet<double> > t;
+  for(std::size_t e = 0; 3 * e < tri.size(); ++e)
+    for(int a = 0; a < 6; ++a)
+      for(int b = 0; b < 6; ++b)
+      {
+        const int i = 2 * tri[3*e + a/2] + a % 2, j = 2 * tri[3*e + b/2] + b % 2;
+        if(i >= j) t.emplace_back(i, j, 1.);
+      }
+  for(int d = 0; d < n; ++d) t.emplace_back(d, d, 1.);
+  Eigen::SparseMatrix<double> R(n, n);
+  R.setFromTriplets(t.begin(), t.end());
+  R.makeCompressed();
+  BOOST_REQUIRE(H.isCompressed());
+  BOOST_REQUIRE_EQUAL(H.nonZeros(), R.nonZeros());
+  BOOST_TEST(std::equal(H.outerIndexPtr(), H.outerIndexPtr() + n + 1, R.outerIndexPtr()));
+  BOOST_TEST(std::equal(H.innerIndexPtr(), H.innerIndexPtr() + H.nonZeros(), R.innerIndexPtr()));
+
+  // (shifted: a free chart's Hessian is singular up to the rigid motions)
+  Eigen::SparseMatrix<double> A = H;
+  for(int d = 0; d < n; ++d) A.coeffRef(d, d) += 1e-3 * A.diagonal().mean();
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > scalar;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, SMSO::Block_amd_ordering<int> > block;
+  scalar.compute(A);
+  block.compute(A);
+  BOOST_REQUIRE(scalar.info() == Eigen::Success);
+  BOOST_REQUIRE(block.info() == Eigen::Success);
+  const auto& P = block.permutationP().indices();
+  for(int k = 0; k < n / 2; ++k)
+  {
+    BOOST_TEST(P[2*k] % 2 == 0);
+    BOOST_TEST(P[2*k + 1] == P[2*k] + 1);
+  }
+  const double fill_scalar = double(scalar.matrixL().nestedExpression().nonZeros());
+  const double fill_block = double(block.matrixL().nestedExpression().nonZeros());
+  BOOST_TEST_MESSAGE("nnz(L): AMD on unknowns " << fill_scalar << ", on UV vertices " << fill_block);
+  BOOST_TEST(fill_block <= 1.15 * fill_scalar);
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1., 1.);
+  const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
+  const Eigen::VectorXd xs = scalar.solve(b), xb = block.solve(b);
+  BOOST_TEST((full * xb - b).norm() <= 1e-10 * b.norm());
+  BOOST_TEST((xb - xs).norm() <= 1e-8 * xs.norm());
 }
 
 BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newton_step)
@@ -904,6 +997,104 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
 }
 
+
+// The linear-time proof of no overlap (degree argument on the UV border):
+// it must accept the injective maps below (a jittered grid, a grid with a
+// hole, whose border loop turns clockwise, a strip bent on less than a
+// turn) and reject every overlap, including ones the border loops alone do
+// not show (a chart inside another, a strip bent on more than a turn),
+// where the pairs' count must then find them. Borders that only touch are
+// no proof, but no overlap either.
+BOOST_AUTO_TEST_CASE(the_linear_proof_of_no_overlap_accepts_injective_maps_and_no_overlap)
+{
+  using SMSO::internal::is_certainly_overlap_free;
+  using SMSO::internal::count_overlapping_pairs;
+  auto pairs = [](const Cut_mesh& cm) { return count_overlapping_pairs(cm.corner_uv, cm.uv.data()); };
+  auto identity = [](Cut_mesh& cm) {
+    for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+      for(int d = 0; d < 2; ++d) cm.uv[2*u + d] = cm.points[3 * cm.uv_vertex[u] + d];
+  };
+  {
+    Cut_mesh cm = one_chart(planar_grid(8, 3));
+    identity(cm);
+    BOOST_TEST(is_certainly_overlap_free(cm));
+    BOOST_TEST(pairs(cm) == 0u);
+    // one interior vertex dragged across its neighbours: flipped triangles
+    const int u = cm.corner_uv[3 * 40];
+    cm.uv[2*u] += 2.5;
+    BOOST_TEST(!is_certainly_overlap_free(cm));
+    BOOST_TEST(count_overlapping_pairs(cm) > 0u);
+    BOOST_TEST(count_overlapping_pairs(cm) == pairs(cm));
+  }
+  {
+    // a 6 x 6 grid without its 2 x 2 middle squares: an annulus
+    Surface_mesh sm;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(int j = 0; j <= 6; ++j)
+      for(int i = 0; i <= 6; ++i) v.push_back(sm.add_vertex(Point_3(i, j, 0.)));
+    for(int j = 0; j < 6; ++j)
+      for(int i = 0; i < 6; ++i)
+      {
+        if(i >= 2 && i < 4 && j >= 2 && j < 4) continue;
+        sm.add_face(v[j*7+i], v[j*7+i+1], v[(j+1)*7+i+1]);
+        sm.add_face(v[j*7+i], v[(j+1)*7+i+1], v[(j+1)*7+i]);
+      }
+    Cut_mesh cm = one_chart(sm);
+    identity(cm);
+    BOOST_TEST(is_certainly_overlap_free(cm));
+    BOOST_TEST(pairs(cm) == 0u);
+  }
+  {
+    Grid_cut g; // two disks side by side, touching along the cut
+    std::vector<std::pair<int, int> > path;
+    for(int j = 0; j <= 9; ++j) path.emplace_back(4, j);
+    g.cut_along(path);
+    identity(g.cm);
+    BOOST_TEST(!is_certainly_overlap_free(g.cm));
+    BOOST_TEST(count_overlapping_pairs(g.cm) == 0u);
+    std::vector<int> chart, chart_of_uv(g.cm.number_of_uv_vertices());
+    BOOST_REQUIRE(g.cm.compute_charts(chart) == 2u);
+    for(std::size_t c = 0; c < g.cm.corner_uv.size(); ++c) chart_of_uv[g.cm.corner_uv[c]] = chart[c / 3];
+    const int left = chart[0]; // face 0: the square at the origin
+    // the left disk moved apart: a proof
+    for(std::size_t u = 0; u < chart_of_uv.size(); ++u)
+      if(chart_of_uv[u] == left) g.cm.uv[2*u] -= 1;
+    BOOST_TEST(is_certainly_overlap_free(g.cm));
+    BOOST_TEST(pairs(g.cm) == 0u);
+    // the left disk shrunk into the middle of the right one: borders disjoint, yet an overlap
+    for(std::size_t u = 0; u < chart_of_uv.size(); ++u)
+      if(chart_of_uv[u] == left)
+        for(int d = 0; d < 2; ++d) g.cm.uv[2*u + d] = (d ? 4.5 : 6.5) + 0.1 * (g.cm.uv[2*u + d] - (d ? 4.5 : 1.));
+    for(std::size_t f = 0; f < g.cm.number_of_faces(); ++f) BOOST_REQUIRE(g.cm.signed_uv_area2(f) > 0);
+    BOOST_TEST(!is_certainly_overlap_free(g.cm));
+    BOOST_TEST(pairs(g.cm) > 0u);
+    BOOST_TEST(count_overlapping_pairs(g.cm) == pairs(g.cm));
+  }
+  // a strip of 12 x 1 squares bent on `turns` of an annulus
+  for(double turns : { 0.9, 1.1 })
+  {
+    const int n = 12;
+    Surface_mesh sm;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for(int j = 0; j <= 1; ++j)
+      for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
+    for(int i = 0; i < n; ++i)
+    {
+      sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
+      sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
+    }
+    Cut_mesh cm = one_chart(sm);
+    for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+    {
+      const double* p = &cm.points[3 * cm.uv_vertex[u]];
+      const double a = 2 * 3.14159265358979323846 * turns * p[0] / n, r = 3 - p[1];
+      cm.uv[2*u] = r * std::cos(a); cm.uv[2*u+1] = r * std::sin(a);
+    }
+    for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
+    BOOST_TEST(is_certainly_overlap_free(cm) == (turns < 1));
+    BOOST_TEST((pairs(cm) == 0u) == (turns < 1));
+  }
+}
 
 // A flat strip of 12 x 1 squares mapped onto 1.25 turns of an annulus: its
 // UV map is flip-free but its two ends overlap. The split must cut it in

@@ -127,21 +127,8 @@ public:
     Phase_timer timer(m_timings.symbolic_analysis);
     const std::size_t ne = number_of_elements();
     const int ndof = int(2 * m_cm.number_of_uv_vertices() + (has_scaffold() ? m_scaffold->pos.size() : 0));
-    std::vector<Eigen::Triplet<double> > triplets;
-    triplets.reserve(21 * ne + ndof);
+    build_lower_pattern(ne, ndof);
     int dof[6];
-    for(std::size_t f = 0; f < ne; ++f)
-    {
-      local_dofs(f, dof);
-      for(int p = 0; p < 6; ++p)
-        for(int q = 0; q <= p; ++q)
-          triplets.emplace_back((std::max)(dof[p], dof[q]), (std::min)(dof[p], dof[q]), 0.);
-    }
-    for(int d = 0; d < ndof; ++d) triplets.emplace_back(d, d, 0.);
-    m_H.resize(ndof, ndof);
-    m_H.setFromTriplets(triplets.begin(), triplets.end());
-    m_H.makeCompressed();
-
     m_entry.resize(21 * ne);
     for(std::size_t f = 0; f < ne; ++f)
     {
@@ -160,6 +147,9 @@ public:
     m_reuse_factor = false;
     return m_solver.analyze_pattern(m_H);
   }
+
+  // The lower triangle of the last assembled Hessian.
+  const Matrix& hessian() const { return m_H; }
 
   // Energy of the charts (without the scaffold's).
   double energy() const { return m_energy_value; }
@@ -301,6 +291,55 @@ private:
     if(has_scaffold()) std::copy(m_x.begin() + n, m_x.end(), m_scaffold->pos.begin());
   }
 
+  // The lower triangle's pattern, column by column: the 2x2 blocks of the
+  // vertices that share an element (no triplets to sort: the pattern is
+  // built anew after every topology change).
+  void build_lower_pattern(std::size_t ne, int ndof)
+  {
+    const int nv = ndof / 2;
+    std::vector<int>& start = m_pattern_start;
+    std::vector<int>& adjacent = m_pattern_adjacent;
+    start.assign(nv + 1, 0);
+    int dof[6];
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      local_dofs(e, dof);
+      for(int a = 0; a < 3; ++a) start[dof[2*a] / 2 + 1] += 2;
+    }
+    for(int v = 0; v < nv; ++v) start[v + 1] += start[v];
+    adjacent.resize(start[nv]);
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for(std::size_t e = 0; e < ne; ++e)
+    {
+      local_dofs(e, dof);
+      for(int a = 0; a < 3; ++a)
+        for(int b = 1; b < 3; ++b) adjacent[fill[dof[2*a] / 2]++] = dof[2 * ((a + b) % 3)] / 2;
+    }
+    // per vertex: itself, then its neighbours of higher index, sorted
+    std::vector<int> outer(ndof + 1, 0), inner;
+    inner.reserve(std::size_t(2 * ndof + 4 * start[nv]));
+    for(int v = 0; v < nv; ++v)
+    {
+      int* first = adjacent.data() + start[v];
+      int* last = adjacent.data() + start[v + 1];
+      std::sort(first, last);
+      last = std::unique(first, last);
+      first = std::upper_bound(first, last, v);
+      for(int c = 0; c < 2; ++c)
+      {
+        if(c == 0) inner.push_back(2 * v);
+        inner.push_back(2 * v + 1);
+        for(const int* w = first; w != last; ++w) { inner.push_back(2 * *w); inner.push_back(2 * *w + 1); }
+        outer[2 * v + c + 1] = int(inner.size());
+      }
+    }
+    m_H.resize(ndof, ndof);
+    m_H.resizeNonZeros(Eigen::Index(inner.size()));
+    std::copy(outer.begin(), outer.end(), m_H.outerIndexPtr());
+    std::copy(inner.begin(), inner.end(), m_H.innerIndexPtr());
+    std::fill(m_H.valuePtr(), m_H.valuePtr() + inner.size(), 0.);
+  }
+
   int entry_index(int row, int col) const
   {
     const int* begin = m_H.innerIndexPtr() + m_H.outerIndexPtr()[col];
@@ -369,6 +408,7 @@ private:
 
   Matrix m_H;
   std::vector<int> m_entry, m_diagonal;
+  std::vector<int> m_pattern_start, m_pattern_adjacent; // workspace of build_lower_pattern()
   Eigen::VectorXd m_gradient, m_direction;
   std::vector<double> m_trial;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
