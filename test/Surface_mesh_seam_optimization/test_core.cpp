@@ -433,10 +433,10 @@ BOOST_AUTO_TEST_CASE(flip_free_step_is_tight_and_newton_never_flips)
 }
 
 // The Hessian's pattern, built column by column from the vertices' blocks,
-// is the one of the elements' triplets (charts and scaffold); the ordering
-// of the UV vertices' 2x2 blocks keeps each block's two unknowns together,
-// fills the factor about as AMD on the unknowns does and solves alike.
-BOOST_AUTO_TEST_CASE(the_hessian_pattern_and_the_ordering_of_uv_vertices)
+// is the one of the elements' triplets (charts and scaffold); the default
+// LDL^T, which scatters the values into a permuted pattern made once,
+// solves as Eigen's SimplicialLDLT, to the last bit.
+BOOST_AUTO_TEST_CASE(the_hessian_pattern_and_the_permuted_factorization)
 {
   Grid_cut g;
   std::vector<std::pair<int, int> > path;
@@ -500,27 +500,33 @@ BOOST_AUTO_TEST_CASE(the_hessian_pattern_and_the_ordering_of_uv_vertices)
   // (shifted: a free chart's Hessian is singular up to the rigid motions)
   Eigen::SparseMatrix<double> A = H;
   for(int d = 0; d < n; ++d) A.coeffRef(d, d) += 1e-3 * A.diagonal().mean();
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > scalar;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, SMSO::Block_amd_ordering<int> > block;
-  scalar.compute(A);
-  block.compute(A);
-  BOOST_REQUIRE(scalar.info() == Eigen::Success);
-  BOOST_REQUIRE(block.info() == Eigen::Success);
-  const auto& P = block.permutationP().indices();
-  for(int k = 0; k < n / 2; ++k)
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int> > eigen;
+  eigen.compute(A);
+  BOOST_REQUIRE(eigen.info() == Eigen::Success);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1., 1.);
+
+  // the traits (values scattered into the permuted pattern made once) solve
+  // as Eigen's SimplicialLDLT with that ordering, to the last bit, also
+  // after the values changed
+  SMSO::Eigen_simplicial_ldlt_traits traits;
+  BOOST_REQUIRE(traits.analyze_pattern(A));
+  for(int round = 0; round < 2; ++round)
   {
-    BOOST_TEST(P[2*k] % 2 == 0);
-    BOOST_TEST(P[2*k + 1] == P[2*k] + 1);
+    if(round == 1)
+    {
+      for(int k = 0; k < A.nonZeros(); ++k) A.valuePtr()[k] *= 1 + 0.1 * std::sin(double(k));
+      for(int d = 0; d < n; ++d) A.coeffRef(d, d) += 1e-2 * A.diagonal().mean();
+      eigen.factorize(A);
+      BOOST_REQUIRE(eigen.info() == Eigen::Success);
+    }
+    BOOST_REQUIRE(traits.factorize(A));
+    Eigen::VectorXd xt;
+    BOOST_REQUIRE(traits.solve(b, xt));
+    const Eigen::VectorXd xe = eigen.solve(b);
+    BOOST_TEST((xt.array() == xe.array()).all());
+    const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
+    BOOST_TEST((full * xt - b).norm() <= 1e-10 * b.norm());
   }
-  const double fill_scalar = double(scalar.matrixL().nestedExpression().nonZeros());
-  const double fill_block = double(block.matrixL().nestedExpression().nonZeros());
-  BOOST_TEST_MESSAGE("nnz(L): AMD on unknowns " << fill_scalar << ", on UV vertices " << fill_block);
-  BOOST_TEST(fill_block <= 1.15 * fill_scalar);
-  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1., 1.);
-  const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
-  const Eigen::VectorXd xs = scalar.solve(b), xb = block.solve(b);
-  BOOST_TEST((full * xb - b).norm() <= 1e-10 * b.norm());
-  BOOST_TEST((xb - xs).norm() <= 1e-8 * xs.norm());
 }
 
 BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newton_step)
@@ -643,6 +649,60 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
   BOOST_TEST(std::abs(e_stale - e_exact) <= 1e-8 * e_exact);
   BOOST_TEST(f_stale < it_stale); // some steps reused the last factorization
   BOOST_TEST(f_stale < f_exact);
+}
+
+// The seam loop's setting: every step exact, except the one that can only
+// confirm convergence, solved with the last factor. The descent must stop
+// where the exact one does (the same decrease test), with fewer
+// factorizations.
+BOOST_AUTO_TEST_CASE(the_step_that_confirms_convergence_reuses_the_last_factor)
+{
+  Surface_mesh sm = planar_grid(12, 9);
+  for(auto v : vertices(sm))
+  {
+    const Point_3 p = sm.point(v);
+    sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
+  }
+  SMSO::internal::Cut_mesh cm = one_chart(sm);
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = 1.3 * p[0] + 0.1 * std::sin(p[1]);
+    cm.uv[2*u+1] = 0.8 * p[1];
+  }
+  const SMSO::Symmetric_Dirichlet_energy energy;
+  struct Run { double e; std::size_t iterations, factorizations, confirmations; };
+  auto run = [&](bool confirms) {
+    Cut_mesh c = cm;
+    SMSO::internal::Newton_settings settings;
+    settings.stale_factor_iterations = 0;
+    settings.stale_factor_confirms = confirms;
+    settings.relative_decrease_tolerance = 3e-6;
+    SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
+      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
+    BOOST_REQUIRE(newton.rebuild_pattern());
+    SMSO::internal::Newton_status status = SMSO::internal::NEWTON_PROGRESS;
+    for(int it = 0; it < 200 && status == SMSO::internal::NEWTON_PROGRESS; ++it)
+    {
+      status = newton.step();
+      BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
+    }
+    BOOST_REQUIRE(status == SMSO::internal::NEWTON_CONVERGED);
+    for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
+    return Run{ newton.energy(), newton.iterations(), newton.factorizations(), newton.confirmations() };
+  };
+  const Run exact = run(false), confirmed = run(true);
+  BOOST_TEST_MESSAGE("iterations " << exact.iterations << " / " << confirmed.iterations << ", factorizations "
+                     << exact.factorizations << " / " << confirmed.factorizations);
+  BOOST_TEST(exact.confirmations == 0u);
+  BOOST_TEST(exact.factorizations == exact.iterations);
+  BOOST_TEST(confirmed.confirmations >= 1u);
+  BOOST_TEST(confirmed.factorizations + confirmed.confirmations == confirmed.iterations);
+  BOOST_TEST(confirmed.factorizations < exact.factorizations);
+  BOOST_TEST(confirmed.iterations <= exact.iterations);
+  // both stop within the decrease test of the same stationary point
+  BOOST_TEST(std::abs(confirmed.e - exact.e) <= 3e-6 * exact.e);
+  BOOST_TEST(exact.e > 4. + 1e-4); // curved: no isometry
 }
 
 BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)

@@ -13,6 +13,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -57,61 +58,105 @@ private:
 };
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// An Eigen ordering functor (as `Eigen::AMDOrdering`): Eigen's approximate
-/// minimum degree ordering of the graph of the 2x2 blocks of unknowns
-/// (2k, 2k+1), the two coordinates of a UV vertex, expanded to the
-/// unknowns. That graph has a quarter of the entries, and the pattern is
-/// analysed anew after every change of the UV topology (hundreds of times
-/// per run). On a matrix of odd size, the ordering of the unknowns.
-template <typename StorageIndex>
-class Block_amd_ordering
+/// Eigen's simplicial LDL^T with AMD ordering (faster than CHOLMOD's
+/// supernodal factorization below about 30k unknowns, see
+/// `Default_sparse_solver_traits`). The permuted matrix's pattern, and where
+/// each entry of the given lower triangle goes in it, are computed with the
+/// ordering, so that every factorization only scatters the values (Eigen's
+/// `SimplicialLDLT` with an ordering permutes a copy of the matrix at every
+/// factorization); the factors are those of
+/// `SimplicialLDLT<Matrix, Lower, AMDOrdering<int> >`, to the last bit.
+/// \cgalModels `SparseSolverTraits`
+class Eigen_simplicial_ldlt_traits
 {
 public:
-  /// the permutation type of Eigen's orderings
-  typedef Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, StorageIndex> PermutationType;
+  typedef Eigen::SparseMatrix<double> Matrix;
+  typedef Eigen::VectorXd Vector;
 
-  /// the fill-reducing permutation of the symmetric matrix `A` (both
-  /// triangles stored, as Eigen's simplicial factorizations pass it)
-  template <typename MatrixType>
-  void operator()(const MatrixType& A, PermutationType& perm)
+  Eigen_simplicial_ldlt_traits() : m(new Data) {}
+
+  /// symbolic analysis; called once per sparsity pattern
+  bool analyze_pattern(const Matrix& A)
   {
-    const StorageIndex n = StorageIndex(A.cols());
-    if(n % 2 != 0) { Eigen::AMDOrdering<StorageIndex>()(A, perm); return; }
-    const StorageIndex m = n / 2;
-    Eigen::SparseMatrix<double, Eigen::ColMajor, StorageIndex> B(m, m);
-    std::vector<StorageIndex> outer(m + 1, 0), inner, mark(m, -1);
-    inner.reserve(std::size_t(A.nonZeros() / 3 + m));
-    for(StorageIndex k = 0; k < m; ++k)
+    const int n = int(A.cols());
     {
-      for(StorageIndex j = 2 * k; j < 2 * k + 2; ++j)
-        for(typename MatrixType::InnerIterator it(A, j); it; ++it)
-        {
-          const StorageIndex b = StorageIndex(it.index() / 2);
-          if(mark[b] == k) continue;
-          mark[b] = k;
-          inner.push_back(b);
-        }
-      outer[k + 1] = StorageIndex(inner.size());
+      const Matrix full = A.selfadjointView<Eigen::Lower>();
+      Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
+      Eigen::AMDOrdering<int>()(full, inverse);
+      m->perm.resize(n);
+      for(int k = 0; k < n; ++k) m->perm[inverse.indices()[k]] = k;
     }
-    B.resizeNonZeros(Eigen::Index(inner.size()));
-    std::copy(outer.begin(), outer.end(), B.outerIndexPtr());
-    std::copy(inner.begin(), inner.end(), B.innerIndexPtr());
-    std::fill(B.valuePtr(), B.valuePtr() + inner.size(), 1.);
-    PermutationType block;
-    Eigen::internal::minimum_degree_ordering(B, block);
-    perm.resize(n);
-    for(StorageIndex k = 0; k < m; ++k)
-      for(StorageIndex c = 0; c < 2; ++c) perm.indices()[2 * k + c] = 2 * block.indices()[k] + c;
+    // the upper triangle of P A P^T, its entries in the order in which
+    // Eigen's permutation puts them (the factorization's rounding depends on it)
+    const Matrix& a = compressed(A);
+    const int* perm = m->perm.data();
+    const int* outer = a.outerIndexPtr();
+    const int* inner = a.innerIndexPtr();
+    std::vector<int> count(n + 1, 0);
+    for(int j = 0; j < n; ++j)
+      for(int k = outer[j]; k < outer[j + 1]; ++k)
+        if(inner[k] >= j) ++count[(std::max)(perm[inner[k]], perm[j]) + 1];
+    for(int j = 0; j < n; ++j) count[j + 1] += count[j];
+    Matrix& U = m->permuted;
+    U.resize(n, n);
+    U.resizeNonZeros(count[n]);
+    std::copy(count.begin(), count.end(), U.outerIndexPtr());
+    std::fill(U.valuePtr(), U.valuePtr() + count[n], 0.);
+    m->slot.assign(std::size_t(a.nonZeros()), -1);
+    for(int j = 0; j < n; ++j)
+      for(int k = outer[j]; k < outer[j + 1]; ++k)
+      {
+        if(inner[k] < j) continue;
+        const int ip = perm[inner[k]], jp = perm[j];
+        const int slot = count[(std::max)(ip, jp)]++;
+        U.innerIndexPtr()[slot] = (std::min)(ip, jp);
+        m->slot[std::size_t(k)] = slot;
+      }
+    m->ldlt.analyzePattern(U);
+    return m->ldlt.info() == Eigen::Success;
   }
-};
+  /// numeric factorization of a matrix with the analysed pattern
+  bool factorize(const Matrix& A)
+  {
+    double* values = m->permuted.valuePtr();
+    const double* a = compressed(A).valuePtr();
+    for(std::size_t k = 0; k < m->slot.size(); ++k)
+      if(m->slot[k] >= 0) values[m->slot[k]] = a[k];
+    m->ldlt.factorize(m->permuted);
+    return m->ldlt.info() == Eigen::Success;
+  }
+  bool solve(const Vector& b, Vector& x)
+  {
+    const Eigen::Index n = b.size();
+    m->rhs.resize(n);
+    for(Eigen::Index i = 0; i < n; ++i) m->rhs[m->perm[i]] = b[i];
+    m->solution = m->ldlt.solve(m->rhs);
+    if(m->ldlt.info() != Eigen::Success) return false;
+    x.resize(n);
+    for(Eigen::Index i = 0; i < n; ++i) x[i] = m->solution[m->perm[i]];
+    return x.allFinite();
+  }
 
-/// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// Eigen's simplicial LDL^T with the AMD ordering of the UV vertices
-/// (`Block_amd_ordering`; faster than CHOLMOD's supernodal factorization
-/// below about 30k unknowns, see `Default_sparse_solver_traits`).
-typedef Eigen_sparse_solver_traits<
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Block_amd_ordering<int> > >
-  Eigen_simplicial_ldlt_traits;
+private:
+  const Matrix& compressed(const Matrix& A)
+  {
+    if(A.isCompressed()) return A;
+    m->compressed = A;
+    m->compressed.makeCompressed();
+    return m->compressed;
+  }
+
+  struct Data
+  {
+    Matrix compressed; // a copy of an uncompressed input
+    Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt;
+    std::vector<int> perm, slot; // new index of each unknown; entry of A -> entry of the permuted matrix
+    Matrix permuted;
+    Vector rhs, solution;
+  };
+  // like Eigen_sparse_solver_traits: copies share the factorization
+  std::shared_ptr<Data> m;
+};
 
 #if defined(CGAL_SMSO_HAS_CHOLMOD) || defined(DOXYGEN_RUNNING)
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
