@@ -121,6 +121,51 @@ struct Grid_cut
   }
 };
 
+// A curved (not developable) 12 x 12 patch mapped as one chart, stretched
+// by (sx, sy) and sheared: a start for Newton descents.
+Cut_mesh curved_patch(double sx, double sy)
+{
+  Surface_mesh sm = planar_grid(12, 9);
+  for(auto v : vertices(sm))
+  {
+    const Point_3 p = sm.point(v);
+    sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
+  }
+  Cut_mesh cm = one_chart(sm);
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = sx * p[0] + 0.1 * std::sin(p[1]);
+    cm.uv[2*u+1] = sy * p[1];
+  }
+  return cm;
+}
+
+// A flat strip of 12 x 1 squares, one chart, mapped onto `turns` turns of
+// an annulus (x along the strip -> angle, y across -> radius, inwards:
+// counterclockwise triangles); its ends overlap from one turn on.
+Cut_mesh bent_strip(double turns)
+{
+  const int n = 12;
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int j = 0; j <= 1; ++j)
+    for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
+  for(int i = 0; i < n; ++i)
+  {
+    sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
+    sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
+  }
+  Cut_mesh cm = one_chart(sm);
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    const double a = 2 * 3.14159265358979323846 * turns * p[0] / n, r = 3 - p[1];
+    cm.uv[2*u] = r * std::cos(a); cm.uv[2*u+1] = r * std::sin(a);
+  }
+  return cm;
+}
+
 template <typename Mesh>
 Mesh read_mesh(const std::string& name)
 {
@@ -605,19 +650,7 @@ BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newto
 BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_fewer_factorizations)
 {
   // A curved patch (not developable) from a strongly distorted start.
-  Surface_mesh sm = planar_grid(12, 9);
-  for(auto v : vertices(sm))
-  {
-    const Point_3 p = sm.point(v);
-    sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
-  }
-  SMSO::internal::Cut_mesh cm = one_chart(sm);
-  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-  {
-    const double* p = &cm.points[3 * cm.uv_vertex[u]];
-    cm.uv[2*u] = 2. * p[0] + 0.1 * std::sin(p[1]);
-    cm.uv[2*u+1] = 0.5 * p[1];
-  }
+  const Cut_mesh cm = curved_patch(2., 0.5);
   const SMSO::Symmetric_Dirichlet_energy energy;
   auto run = [&](int stale_iterations, std::size_t& iterations, std::size_t& factorizations) {
     Cut_mesh c = cm;
@@ -657,19 +690,7 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
 // factorizations.
 BOOST_AUTO_TEST_CASE(the_step_that_confirms_convergence_reuses_the_last_factor)
 {
-  Surface_mesh sm = planar_grid(12, 9);
-  for(auto v : vertices(sm))
-  {
-    const Point_3 p = sm.point(v);
-    sm.point(v) = Point_3(p.x(), p.y(), 0.03 * (p.x() * p.x() + p.y() * p.y()));
-  }
-  SMSO::internal::Cut_mesh cm = one_chart(sm);
-  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-  {
-    const double* p = &cm.points[3 * cm.uv_vertex[u]];
-    cm.uv[2*u] = 1.3 * p[0] + 0.1 * std::sin(p[1]);
-    cm.uv[2*u+1] = 0.8 * p[1];
-  }
+  const Cut_mesh cm = curved_patch(1.3, 0.8);
   const SMSO::Symmetric_Dirichlet_energy energy;
   struct Run { double e; std::size_t iterations, factorizations, confirmations; };
   auto run = [&](bool confirms) {
@@ -1133,23 +1154,7 @@ BOOST_AUTO_TEST_CASE(the_linear_proof_of_no_overlap_accepts_injective_maps_and_n
   // a strip of 12 x 1 squares bent on `turns` of an annulus
   for(double turns : { 0.9, 1.1 })
   {
-    const int n = 12;
-    Surface_mesh sm;
-    std::vector<Surface_mesh::Vertex_index> v;
-    for(int j = 0; j <= 1; ++j)
-      for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
-    for(int i = 0; i < n; ++i)
-    {
-      sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
-      sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
-    }
-    Cut_mesh cm = one_chart(sm);
-    for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-    {
-      const double* p = &cm.points[3 * cm.uv_vertex[u]];
-      const double a = 2 * 3.14159265358979323846 * turns * p[0] / n, r = 3 - p[1];
-      cm.uv[2*u] = r * std::cos(a); cm.uv[2*u+1] = r * std::sin(a);
-    }
+    const Cut_mesh cm = bent_strip(turns);
     for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
     BOOST_TEST(is_certainly_overlap_free(cm) == (turns < 1));
     BOOST_TEST((pairs(cm) == 0u) == (turns < 1));
@@ -1161,25 +1166,7 @@ BOOST_AUTO_TEST_CASE(the_linear_proof_of_no_overlap_accepts_injective_maps_and_n
 // two pieces that do not overlap themselves, each corner keeping its UV.
 BOOST_AUTO_TEST_CASE(a_chart_that_overlaps_itself_is_cut_between_the_overlapping_triangles)
 {
-  const int n = 12;
-  Surface_mesh sm;
-  std::vector<Surface_mesh::Vertex_index> v;
-  for(int j = 0; j <= 1; ++j)
-    for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
-  for(int i = 0; i < n; ++i)
-  {
-    sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
-    sm.add_face(v[i], v[n + 1 + i + 1], v[n + 1 + i]);
-  }
-  Cut_mesh cm = one_chart(sm);
-  const double pi = 3.14159265358979323846;
-  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-  {
-    // x along the strip -> angle (1.25 turns), y across -> radius, inwards (ccw triangles)
-    const double* p = &cm.points[3 * cm.uv_vertex[u]];
-    const double a = 2.5 * pi * p[0] / n, r = 3 - p[1];
-    cm.uv[2*u] = r * std::cos(a); cm.uv[2*u+1] = r * std::sin(a);
-  }
+  Cut_mesh cm = bent_strip(1.25);
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
   BOOST_REQUIRE(SMSO::internal::count_overlapping_pairs(cm) > 0);
   std::vector<double> before(2 * cm.corner_uv.size());
