@@ -684,48 +684,6 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
   BOOST_TEST(f_stale < f_exact);
 }
 
-// The seam loop's setting: every step exact, except the one that can only
-// confirm convergence, solved with the last factor. The descent must stop
-// where the exact one does (the same decrease test), with fewer
-// factorizations.
-BOOST_AUTO_TEST_CASE(the_step_that_confirms_convergence_reuses_the_last_factor)
-{
-  const Cut_mesh cm = curved_patch(1.3, 0.8);
-  const SMSO::Symmetric_Dirichlet_energy energy;
-  struct Run { double e; std::size_t iterations, factorizations, confirmations; };
-  auto run = [&](bool confirms) {
-    Cut_mesh c = cm;
-    SMSO::internal::Newton_settings settings;
-    settings.stale_factor_iterations = 0;
-    settings.stale_factor_confirms = confirms;
-    settings.relative_decrease_tolerance = 3e-6;
-    SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
-      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
-    BOOST_REQUIRE(newton.rebuild_pattern());
-    SMSO::internal::Newton_status status = SMSO::internal::NEWTON_PROGRESS;
-    for(int it = 0; it < 200 && status == SMSO::internal::NEWTON_PROGRESS; ++it)
-    {
-      status = newton.step();
-      BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
-    }
-    BOOST_REQUIRE(status == SMSO::internal::NEWTON_CONVERGED);
-    for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
-    return Run{ newton.energy(), newton.iterations(), newton.factorizations(), newton.confirmations() };
-  };
-  const Run exact = run(false), confirmed = run(true);
-  BOOST_TEST_MESSAGE("iterations " << exact.iterations << " / " << confirmed.iterations << ", factorizations "
-                     << exact.factorizations << " / " << confirmed.factorizations);
-  BOOST_TEST(exact.confirmations == 0u);
-  BOOST_TEST(exact.factorizations == exact.iterations);
-  BOOST_TEST(confirmed.confirmations >= 1u);
-  BOOST_TEST(confirmed.factorizations + confirmed.confirmations == confirmed.iterations);
-  BOOST_TEST(confirmed.factorizations < exact.factorizations);
-  BOOST_TEST(confirmed.iterations <= exact.iterations);
-  // both stop within the decrease test of the same stationary point
-  BOOST_TEST(std::abs(confirmed.e - exact.e) <= 3e-6 * exact.e);
-  BOOST_TEST(exact.e > 4. + 1e-4); // curved: no isometry
-}
-
 BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)
 {
   // the first start does 37 iterations; the second may do 2 x 37, however

@@ -158,13 +158,14 @@ inline bool is_certainly_overlap_free(const Cut_mesh& cm, std::size_t max_loop_w
       return false;
 
   // border edges src -> dst, the charts on their left
-  std::vector<int> src, dst, next(nuv, -1), in(nuv, 0);
+  std::vector<int> src, dst, next(nuv, -1), prev(nuv, -1);
   for(std::size_t h = 0; h < cm.corner_uv.size(); ++h)
   {
     if(cm.opposite[h] >= 0 && !cm.is_seam(int(h))) continue;
     const int u = cm.corner_uv[Cut_mesh::prev(int(h))], w = cm.corner_uv[h];
-    if(next[u] >= 0 || in[w]++ > 0) return false; // a pinch
+    if(next[u] >= 0 || prev[w] >= 0) return false; // a pinch
     next[u] = w;
+    prev[w] = u;
     src.push_back(u);
     dst.push_back(w);
   }
@@ -215,17 +216,16 @@ inline bool is_certainly_overlap_free(const Cut_mesh& cm, std::size_t max_loop_w
 
   // 1 if a loop turns counterclockwise (left of it: inside it), else 0;
   // decided at its lowest-leftmost vertex, which is convex
-  std::vector<int> own(nloops, 0), lowest(nloops, -1), prev_of(nuv, -1);
+  std::vector<int> own(nloops, 0), lowest(nloops, -1);
   for(std::size_t e = 0; e < ne; ++e)
   {
-    prev_of[dst[e]] = src[e];
     int& l = lowest[loop_of[src[e]]];
     if(l < 0 || CGAL::compare_xy(point(src[e]), point(l)) == CGAL::SMALLER) l = src[e];
   }
   for(std::size_t k = 0; k < nloops; ++k)
   {
     const int v = lowest[k];
-    const CGAL::Orientation o = CGAL::orientation(point(prev_of[v]), point(v), point(next[v]));
+    const CGAL::Orientation o = CGAL::orientation(point(prev[v]), point(v), point(next[v]));
     if(o == CGAL::COLLINEAR) return false;
     own[k] = o == CGAL::LEFT_TURN ? 1 : 0;
   }

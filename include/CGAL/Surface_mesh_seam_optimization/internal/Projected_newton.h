@@ -100,12 +100,6 @@ struct Newton_settings
   // lucy_o_f48275 (one pattern): 57.6 -> 52.0 s, the same iterations.
   int stale_factor_iterations = 8;
   double stale_factor_tolerance = 1e-4;
-  // With stale_factor_iterations 0: the step that would only confirm
-  // convergence (its predicted decrease, from one solve with the last
-  // factor, below the decrease test) is still solved with the last factor
-  // (to stale_factor_tolerance, at most 8 iterations), and it ends the
-  // descent as an exact step would. Every other step is exact.
-  bool stale_factor_confirms = false;
 };
 
 enum Newton_status { NEWTON_PROGRESS, NEWTON_CONVERGED, NEWTON_SOLVER_FAILED };
@@ -165,8 +159,6 @@ public:
   std::size_t iterations() const { return m_iterations; }
   // iterations whose step needed a new factorization (the others reused the last one)
   std::size_t factorizations() const { return m_factorizations; }
-  // steps solved with the last factor to confirm convergence (Newton_settings::stale_factor_confirms)
-  std::size_t confirmations() const { return m_confirmations; }
 
   // One projected Newton iteration.
   Newton_status step()
@@ -188,17 +180,9 @@ public:
 
     Phase_timer factorization(m_timings.factorization);
     Eigen::VectorXd rhs = -m_gradient;
-    bool inexact = m_reuse_factor && m_settings.stale_factor_iterations > 0 &&
-                   stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
-                                   m_settings.stale_factor_iterations).converged;
-    // a step that can only confirm convergence: solved with the last factor
-    const bool confirming = !inexact && m_reuse_factor && m_settings.stale_factor_confirms &&
-                            m_solver.solve(rhs, m_direction) &&
-                            0.5 * rhs.dot(m_direction) < m_settings.relative_decrease_tolerance * e0 &&
-                            stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance, 8)
-                              .converged;
-    inexact = inexact || confirming;
-    if(confirming) ++m_confirmations;
+    const bool inexact = m_reuse_factor && m_settings.stale_factor_iterations > 0 &&
+                         stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
+                                         m_settings.stale_factor_iterations).converged;
     if(!inexact)
     {
       if(!m_solver.factorize(m_H)) return NEWTON_SOLVER_FAILED;
@@ -246,7 +230,7 @@ public:
     m_energy_value = e_charts;
     m_objective = e;
     if(m_last_decrease < m_settings.relative_decrease_tolerance * (at_floor ? 1. : t) * e0)
-      return inexact && !confirming ? stalled() : NEWTON_CONVERGED;
+      return inexact ? stalled() : NEWTON_CONVERGED;
     return NEWTON_PROGRESS;
   }
 
@@ -313,9 +297,7 @@ private:
   void build_lower_pattern(std::size_t ne, int ndof)
   {
     const int nv = ndof / 2;
-    std::vector<int>& start = m_pattern_start;
-    std::vector<int>& adjacent = m_pattern_adjacent;
-    start.assign(nv + 1, 0);
+    std::vector<int> start(nv + 1, 0);
     int dof[6];
     for(std::size_t e = 0; e < ne; ++e)
     {
@@ -323,7 +305,7 @@ private:
       for(int a = 0; a < 3; ++a) start[dof[2*a] / 2 + 1] += 2;
     }
     for(int v = 0; v < nv; ++v) start[v + 1] += start[v];
-    adjacent.resize(start[nv]);
+    std::vector<int> adjacent(start[nv]);
     std::vector<int> fill(start.begin(), start.end() - 1);
     for(std::size_t e = 0; e < ne; ++e)
     {
@@ -424,13 +406,12 @@ private:
 
   Matrix m_H;
   std::vector<int> m_entry, m_diagonal;
-  std::vector<int> m_pattern_start, m_pattern_adjacent; // workspace of build_lower_pattern()
   Eigen::VectorXd m_gradient, m_direction;
   std::vector<double> m_trial;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
   bool m_reuse_factor = false; // the last factorization may precondition the next step (same pattern, no stall since)
-  std::size_t m_factorizations = 0, m_confirmations = 0;
+  std::size_t m_factorizations = 0;
   Optimization_timings m_timings;
 };
 

@@ -60,8 +60,8 @@ Error_code setup_seam_optimization(const TriangleMesh& tm, UVMap uvmap, const Na
   // seams of the meshes whose topology decisions are near ties (hand1 1.34
   // -> 1.81 times the reference's; notes/issue20).
   settings.newton.stale_factor_iterations = 0;
-  // Nor the steps that only confirm convergence (stale_factor_confirms):
-  // x0.95 time, but hand1 1.34 -> 1.50 times the reference's (notes/issue20).
+  // Nor for the steps that only confirm convergence (measured: x0.95 time,
+  // hand1 1.34 -> 1.50 times the reference's; notes/issue20).
   settings.bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
   settings.max_iterations = number_of_iterations_parameter(np, default_number_of_iterations);
   const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_recut_rounds),
