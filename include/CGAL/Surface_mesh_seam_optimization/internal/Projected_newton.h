@@ -100,6 +100,13 @@ struct Newton_settings
   // lucy_o_f48275 (one pattern): 57.6 -> 52.0 s, the same iterations.
   int stale_factor_iterations = 8;
   double stale_factor_tolerance = 1e-4;
+  // The projected Hessian drops the negative curvature of compressed
+  // triangles: its model is too curved, a full step falls short, and a
+  // descent creeps on by full steps that each gain little. A full step that
+  // lowers the energy is doubled while that lowers it further, up to this
+  // factor and the flip-free bound (energy evaluations only). 1: never
+  // (the seam loop's setting, see Setup_seam_optimization.h).
+  double extrapolation_limit = 1;
 };
 
 enum Newton_status { NEWTON_PROGRESS, NEWTON_CONVERGED, NEWTON_SOLVER_FAILED };
@@ -213,6 +220,20 @@ public:
       if(has_scaffold()) e += m_scaffold->energy(m_trial.data());
       if(e <= e0 + m_settings.armijo * t * slope) break;
     }
+    if(t == 1. && e < e0)
+    {
+      const double t_limit = (std::min)(m_settings.extrapolation_limit, m_settings.flip_free_fraction * t_max);
+      m_extrapolated.resize(m_x.size());
+      for(double t2 = 2; t2 <= t_limit; t2 *= 2)
+      {
+        for(std::size_t i = 0; i < m_x.size(); ++i) m_extrapolated[i] = m_x[i] + t2 * m_direction[i];
+        const double e2_charts = total_energy(m_cm, m_energy, m_extrapolated.data());
+        const double e2 = e2_charts + (has_scaffold() ? m_scaffold->energy(m_extrapolated.data()) : 0.);
+        if(!(e2 < e)) break;
+        e = e2; e_charts = e2_charts; t = t2;
+        m_trial.swap(m_extrapolated);
+      }
+    }
     ++m_iterations;
     // Only an exact step decides that the iterate is stationary: a stalled
     // inexact one would stop the descent short of the stationary point
@@ -229,7 +250,8 @@ public:
     m_last_decrease = e0 - e;
     m_energy_value = e_charts;
     m_objective = e;
-    if(m_last_decrease < m_settings.relative_decrease_tolerance * (at_floor ? 1. : t) * e0)
+    // (per unit step: an extrapolated step judged as a full one)
+    if(m_last_decrease < m_settings.relative_decrease_tolerance * (at_floor ? 1. : (std::min)(t, 1.)) * e0)
       return inexact ? stalled() : NEWTON_CONVERGED;
     return NEWTON_PROGRESS;
   }
@@ -407,7 +429,7 @@ private:
   Matrix m_H;
   std::vector<int> m_entry, m_diagonal;
   Eigen::VectorXd m_gradient, m_direction;
-  std::vector<double> m_trial;
+  std::vector<double> m_trial, m_extrapolated;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
   bool m_reuse_factor = false; // the last factorization may precondition the next step (same pattern, no stall since)
