@@ -96,7 +96,7 @@ int main(int argc, char** argv)
     auto relax = [&]() {
       double p[2] = { uv[2*r], uv[2*r+1] }; double e = fan_energy(p);
       double lm = std::numeric_limits<double>::infinity(); for(const auto& f : rec.faces) for(int i = 0; i < 3; ++i) if(f[i] != r) lm = std::min(lm, std::hypot(uv[2*f[i]]-p[0], uv[2*f[i]+1]-p[1]));
-      for(int it = 0; it < 20; ++it) {
+      for(int it = 0; it < 30; ++it) {
         double h = 1e-7 * lm; for(int c = 0; c < 12; ++c, h *= 0.1) { double a0[2] = {p[0]+h, p[1]}, a1[2] = {p[0]-h, p[1]}, a2[2] = {p[0], p[1]+h}, a3[2] = {p[0], p[1]-h}; if(std::isfinite(fan_energy(a0)) && std::isfinite(fan_energy(a1)) && std::isfinite(fan_energy(a2)) && std::isfinite(fan_energy(a3))) break; } double g[2];
         for(int k = 0; k < 2; ++k) { double pp[2] = {p[0], p[1]}, pm[2] = {p[0], p[1]}; pp[k] += h; pm[k] -= h; double ep = fan_energy(pp), em = fan_energy(pm); if(!std::isfinite(ep) || !std::isfinite(em)) { g[k] = 0; } else g[k] = (ep - em) / (2*h); }
         const double gl = std::hypot(g[0], g[1]); if(!(gl > 0)) break;
@@ -108,6 +108,17 @@ int main(int argc, char** argv)
     double c[2] = {0, 0}; int n = 0; double lmin = std::numeric_limits<double>::infinity();
     for(const auto& f : rec.faces) for(int i = 0; i < 3; ++i) if(f[i] != r) { c[0] += uv[2*f[i]]; c[1] += uv[2*f[i]+1]; ++n; }
     c[0] /= n; c[1] /= n;
+    if(rec.faces.size() == 1)
+    { // an ear on the border: the triangle as in 3D on its UV edge (the mean would be on the edge)
+      const auto& f = rec.faces[0]; int i = 0; while(f[i] != r) ++i;
+      const int a = f[(i+1)%3], b = f[(i+2)%3]; // (r, a, b) counterclockwise
+      const auto& R = sm.point(SM::Vertex_index(r)); const auto& A = sm.point(SM::Vertex_index(a)); const auto& B = sm.point(SM::Vertex_index(b));
+      const K::Vector_3 ab = B - A, ar = R - A; const double l = std::sqrt(ab.squared_length());
+      const double x = (ar * ab) / l, y = std::sqrt((std::max)(0., ar.squared_length() - x * x));
+      const double ux = uv[2*b] - uv[2*a], uy = uv[2*b+1] - uv[2*a+1], ul = std::hypot(ux, uy), s = ul / l;
+      // r left of a->b? (r, a, b) ccw <=> r on the left of a->b
+      c[0] = uv[2*a] + s * (x * ux / ul - y * uy / ul); c[1] = uv[2*a+1] + s * (x * uy / ul + y * ux / ul);
+    }
     if(valid_at(c)) { uv[2*r] = c[0]; uv[2*r+1] = c[1]; relax(); continue; }
     ++fallback;
     bool done = false;
@@ -140,8 +151,9 @@ int main(int argc, char** argv)
   { auto mr = SMSO::measure_uv_map(sm, fuv); std::cerr << "measure: status " << mr.status << " flipped " << mr.flipped_triangles << "\n";
     double worst = 1e300; for(auto f : sm.faces()) { auto h = sm.halfedge(f); auto a = fuv[h], b = fuv[sm.next(h)], c = fuv[sm.next(sm.next(h))];
       double o = (b.x()-a.x())*(c.y()-a.y()) - (b.y()-a.y())*(c.x()-a.x()); auto P = sm.point(sm.target(h)), Q = sm.point(sm.target(sm.next(h))), R = sm.point(sm.target(sm.next(sm.next(h))));
-      double A = std::sqrt(CGAL::cross_product(Q-P, R-P).squared_length()); if(o / A < worst) worst = o / A; }
+      double A = std::sqrt(CGAL::cross_product(Q-P, R-P).squared_length()); if(o / A < worst) { worst = o / A; std::cerr << "  face " << f.idx() << " ratio " << o/A << " o " << o << " A " << A << " verts " << sm.target(h).idx() << " " << sm.target(sm.next(h)).idx() << " " << sm.target(sm.next(sm.next(h))).idx() << "\n"; } }
     std::cerr << "worst uv/3d area ratio " << worst << "\n"; }
+  { std::vector<char> isc(nv, 0); for(int v : coarse_full) isc[v] = 1; for(int v : {5863, 6103, 5860}) { std::cerr << v << " coarse " << int(isc[v]); for(std::size_t i = 0; i < records.size(); ++i) if(records[i].removed == v) std::cerr << " removed at " << i << " kept " << records[i].kept << " faces " << records[i].faces.size(); std::cerr << "\n"; } }
   std::cerr << "prolonged: " << records.size() << " splits, " << fallback << " off the mean, " << failed << " failed; flips " << SMSO::number_of_flipped_triangles(sm, fuv) << " prolong " << t_prolong - t_coarse << " s\n";
   auto r = SMSO::minimize_distortion(sm, fuv, SMSO::parameters::use_uv_map_as_initial(true));
   std::cerr << "fine: status " << r.status << " " << r.message << " it " << r.iterations << " E " << r.distortion << " init E " << r.initial_distortion << " solve " << r.seconds << " s; total " << t.time() << " s\n";
