@@ -141,6 +141,29 @@ Cut_mesh curved_patch(double sx, double sy)
   return cm;
 }
 
+// Projected Newton (symmetric Dirichlet, SimplicialLDLT) on `c` until it
+// converges or takes `max_steps` steps, checking that the energy never
+// rises; `after_step(newton)` after every step. Returns the last energy.
+template <typename AfterStep>
+double descend(Cut_mesh& c, const SMSO::internal::Newton_settings& settings, int max_steps, AfterStep after_step)
+{
+  const SMSO::Symmetric_Dirichlet_energy energy; // (outlives the descent, which keeps a reference)
+  SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
+    newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
+  BOOST_REQUIRE(newton.rebuild_pattern());
+  double previous = newton.energy();
+  for(int it = 0; it < max_steps; ++it)
+  {
+    const auto status = newton.step();
+    BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
+    BOOST_TEST(newton.energy() <= previous * (1 + 1e-14)); // (rounding at the minimum)
+    previous = newton.energy();
+    after_step(newton);
+    if(status == SMSO::internal::NEWTON_CONVERGED) break;
+  }
+  return newton.energy();
+}
+
 // A flat strip of 12 x 1 squares, one chart, mapped onto `turns` turns of
 // an annulus (x along the strip -> angle, y across -> radius, inwards:
 // counterclockwise triangles); its ends overlap from one turn on.
@@ -651,28 +674,17 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
 {
   // A curved patch (not developable) from a strongly distorted start.
   const Cut_mesh cm = curved_patch(2., 0.5);
-  const SMSO::Symmetric_Dirichlet_energy energy;
   auto run = [&](int stale_iterations, std::size_t& iterations, std::size_t& factorizations) {
     Cut_mesh c = cm;
     SMSO::internal::Newton_settings settings;
     settings.stale_factor_iterations = stale_iterations;
     settings.relative_decrease_tolerance = 1e-12;
-    SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
-      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
-    BOOST_REQUIRE(newton.rebuild_pattern());
-    double previous = newton.energy();
-    for(int it = 0; it < 200; ++it)
-    {
-      const auto status = newton.step();
-      BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
-      BOOST_TEST(newton.energy() <= previous * (1 + 1e-14)); // (rounding at the minimum)
-      previous = newton.energy();
-      if(status == SMSO::internal::NEWTON_CONVERGED) break;
-    }
+    const double e = descend(c, settings, 200, [&](const auto& newton) {
+      iterations = newton.iterations();
+      factorizations = newton.factorizations();
+    });
     for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
-    iterations = newton.iterations();
-    factorizations = newton.factorizations();
-    return newton.energy();
+    return e;
   };
   std::size_t it_exact = 0, f_exact = 0, it_stale = 0, f_stale = 0;
   const double e_exact = run(0, it_exact, f_exact);
@@ -704,29 +716,17 @@ BOOST_AUTO_TEST_CASE(extrapolated_full_steps_reach_the_same_minimum_in_fewer_ite
     cm.uv[2*u] = 0.7 * p[0];
     cm.uv[2*u+1] = 0.7 * p[1];
   }
-  const SMSO::Symmetric_Dirichlet_energy energy;
   auto run = [&](double limit, std::size_t& iterations, double& longest_step) {
     Cut_mesh c = cm;
     SMSO::internal::Newton_settings settings;
     settings.extrapolation_limit = limit;
     settings.relative_decrease_tolerance = 1e-13;
-    SMSO::internal::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
-      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits(), settings);
-    BOOST_REQUIRE(newton.rebuild_pattern());
-    double previous = newton.energy();
     longest_step = 0;
-    for(int it = 0; it < 1000; ++it)
-    {
-      const auto status = newton.step();
-      BOOST_REQUIRE(status != SMSO::internal::NEWTON_SOLVER_FAILED);
-      BOOST_TEST(newton.energy() <= previous * (1 + 1e-14));
-      previous = newton.energy();
+    return descend(c, settings, 1000, [&](const auto& newton) {
       longest_step = (std::max)(longest_step, newton.last_step());
       for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
-      if(status == SMSO::internal::NEWTON_CONVERGED) break;
-    }
-    iterations = newton.iterations();
-    return newton.energy();
+      iterations = newton.iterations();
+    });
   };
   std::size_t it_plain = 0, it_extrapolated = 0;
   double step_plain = 0, step_extrapolated = 0;

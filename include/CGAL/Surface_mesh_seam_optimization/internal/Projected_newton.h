@@ -211,24 +211,19 @@ public:
     // is, not per unit step, or the iterations creep on (ARAP on the cat in
     // bound mode: 100000 of them).
     const bool at_floor = !m_barrier && t < 1.;
-    m_trial.resize(m_x.size());
     double e = std::numeric_limits<double>::infinity(), e_charts = e;
     for(int k = 0; k < 60; ++k, t *= 0.5)
     {
-      for(std::size_t i = 0; i < m_trial.size(); ++i) m_trial[i] = m_x[i] + t * m_direction[i];
-      e = e_charts = total_energy(m_cm, m_energy, m_trial.data());
-      if(has_scaffold()) e += m_scaffold->energy(m_trial.data());
+      e = objective_along_direction(t, m_trial, e_charts);
       if(e <= e0 + m_settings.armijo * t * slope) break;
     }
     if(t == 1. && e < e0)
     {
       const double t_limit = (std::min)(m_settings.extrapolation_limit, m_settings.flip_free_fraction * t_max);
-      m_extrapolated.resize(m_x.size());
       for(double t2 = 2; t2 <= t_limit; t2 *= 2)
       {
-        for(std::size_t i = 0; i < m_x.size(); ++i) m_extrapolated[i] = m_x[i] + t2 * m_direction[i];
-        const double e2_charts = total_energy(m_cm, m_energy, m_extrapolated.data());
-        const double e2 = e2_charts + (has_scaffold() ? m_scaffold->energy(m_extrapolated.data()) : 0.);
+        double e2_charts;
+        const double e2 = objective_along_direction(t2, m_extrapolated, e2_charts);
         if(!(e2 < e)) break;
         e = e2; e_charts = e2_charts; t = t2;
         m_trial.swap(m_extrapolated);
@@ -257,6 +252,16 @@ public:
   }
 
 private:
+  // The objective at m_x + t m_direction, written to `x`; `e_charts` gets the charts' part.
+  double objective_along_direction(double t, std::vector<double>& x, double& e_charts)
+  {
+    x.resize(m_x.size());
+    for(std::size_t i = 0; i < x.size(); ++i) x[i] = m_x[i] + t * m_direction[i];
+    double e = e_charts = total_energy(m_cm, m_energy, x.data());
+    if(has_scaffold()) e += m_scaffold->energy(x.data());
+    return e;
+  }
+
   std::size_t number_of_elements() const
   {
     return m_cm.number_of_faces() + (has_scaffold() ? m_scaffold->number_of_triangles() : 0);
