@@ -5,13 +5,14 @@
 # On the lucy_o_f* series (6k to 48k faces, a topological disk) and two Loop
 # subdivisions of lucy_o_f24136 (96544 and 386176 faces, made once into
 # BUILD/scaling_meshes, not committed), in order of size, one process per run:
-# - distortion only: the initial map (circle boundary + Tutte), timed apart,
-#   then minimize_distortion() from it (seams fixed: none), with the default
+# - distortion only: the initial map (circle boundary + Tutte) timed alone,
+#   then minimize_distortion() as a user calls it (seams fixed: none; from
+#   16000 faces it starts from coarser meshes' maps), with the default
 #   solver (Default_sparse_solver_traits: SimplicialLDLT, CHOLMOD supernodal
 #   from 40000 unknowns): to convergence up to CONVERGE_MAX_FACES faces, else
-#   20 Newton iterations (the iteration count grows slowly with the size, the
-#   cost of an iteration is what scales); and 20 iterations with
-#   Eigen_simplicial_ldlt_traits on every size, for comparison;
+#   20 Newton iterations on the input mesh (the iteration count grows slowly
+#   with the size, the cost of an iteration is what scales); and 20 such
+#   iterations with Eigen_simplicial_ldlt_traits on every size, for comparison;
 # - seam optimization: optimize_seams() at the bound, cancelled by a visitor
 #   past TIME_LIMIT seconds; a size whose time, extrapolated from the sizes
 #   done, exceeds 1.5 TIME_LIMIT, or larger than a size that was cancelled,
@@ -121,7 +122,9 @@ import csv, json, math, os, sys
 (raw, work, prefix, bound, commit, dirty, nproc, cpu, date, load_before, load_after, time_limit,
  append_to, converge_max_faces, capped) = sys.argv[1:]
 fields = ["mode", "mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
-          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds"]
+          "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds",
+          "overlapping_pairs", "scaffold_rebuilds", "t_assembly", "t_factorization", "t_symbolic", "t_line_search",
+          "t_topology", "t_scaffold"]
 rows = [dict(zip(fields, l)) for l in csv.reader(open(raw)) if l]
 for r in rows:
     p = os.path.join(work, f"{r['mode']}.{r['mesh']}.uvm.json")
@@ -154,7 +157,9 @@ converged = lambda r: r["status"] == "OK"
 by_mode = {}
 for r in rows: by_mode.setdefault(r["mode"], {})[r["mesh"]] = r
 dist, chol, seam = by_mode.get("distortion", {}), by_mode.get("ldlt", {}), by_mode.get("seams", {})
-per_it = lambda r: num(r["seconds"]) / num(r["iterations"]) if num(r["iterations"]) and num(r["seconds"]) else None
+# the input mesh's Newton iterations alone (the call's seconds include the initial map and coarser levels)
+newton_s = lambda r: sum(num(r.get(k)) or 0 for k in ("t_assembly", "t_factorization", "t_symbolic", "t_line_search"))
+per_it = lambda r: newton_s(r) / num(r["iterations"]) if num(r["iterations"]) and newton_s(r) else None
 # a capped descent whose map still has a tiny triangle returns no map, but its iterations were timed
 timed = lambda r: finished(r) or (r["status"] == "ERROR_DEGENERATE_UV_RESULT" and num(r["iterations"]) is not None)
 
@@ -192,10 +197,12 @@ L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start {load_
          "(the machine is shared with other jobs: wall times are noisy, one run per size)")
 L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topological disk), and lucy_o_f24136 "
          "after 1 and 2 steps of Loop subdivision (CGAL::Subdivision_method_3, made by `subdivide_mesh`)")
-L.append(f"- distortion only: the initial map (circle boundary + Tutte through Surface_mesh_parameterization; "
-         f"\"init s\"), then `minimize_distortion()` from it, seams fixed (none), default solver "
+L.append(f"- distortion only: the initial map alone (circle boundary + Tutte through Surface_mesh_parameterization; "
+         f"\"init s\"), then `minimize_distortion()` as a user calls it (\"dist. s\": the whole call, its own initial "
+         f"map included, and from 16000 faces its start from coarser meshes), seams fixed (none), default solver "
          f"(`Default_sparse_solver_traits`: SimplicialLDLT, CHOLMOD supernodal from 40000 unknowns): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
-         f"(\"capped\"; E_SD is then not the minimum); \"s\" excludes the initial map"
+         f"on the input mesh (\"capped\"; E_SD is then not the minimum); \"s/it\": the input mesh's Newton iterations alone "
+         f"(assembly, factorization, line search)"
          + (f"; SimplicialLDLT: the same with `Eigen_simplicial_ldlt_traits`, {capped} iterations on every size" if chol else ""))
 L.append(f"- seams: `optimize_seams()` at the bound {bound}, not bijective, cancelled by a visitor past {time_limit} s "
          f"(WARNING_CANCELLED); a size whose time extrapolated from the finished sizes exceeds 1.5 x {time_limit} s, "

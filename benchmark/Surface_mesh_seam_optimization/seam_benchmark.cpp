@@ -15,9 +15,11 @@
 // --time-limit S: a visitor cancels the run past S seconds; the best result so
 // far is written and the status is WARNING_CANCELLED.
 // --distortion-only: minimize_distortion() with the seams of the initial map
-// (none for a disk) instead of optimize_seams(): the descent step alone. The
-// initial map (compute_initial_parameterization()) is then timed apart:
-// seconds is the descent from it, initial_map_seconds the map itself.
+// (none for a disk) instead of optimize_seams(): the descent step alone, from
+// its default start (the initial map, or from 16000 faces coarser meshes'
+// maps); seconds is the whole call, initial map included, and
+// initial_map_seconds the initial map (compute_initial_parameterization())
+// alone, timed before it.
 // --no-bijectivity: bijective(false) (no scaffold; charts may overlap).
 // --solver ldlt|cholmod: Eigen_simplicial_ldlt_traits or Cholmod_traits (when the
 // package is built with CHOLMOD) instead of the default Default_sparse_solver_traits.
@@ -142,7 +144,7 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
                                        SMSO_np::edge_is_seam_map(seams));
   auto run = [&](const auto& np) {
     if(settings.distortion_only)
-      return SMSO::minimize_distortion(sm, uv, SMSO_np::combine(np, SMSO_np::use_uv_map_as_initial(true)));
+      return SMSO::minimize_distortion(sm, uv, np);
     return SMSO::optimize_seams(sm, uv, SMSO_np::combine(np, SMSO_np::bijective(settings.bijective),
                                                          SMSO_np::visitor(std::ref(visitor))));
   };

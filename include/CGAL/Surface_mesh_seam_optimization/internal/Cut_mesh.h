@@ -23,6 +23,20 @@ inline double signed_area2(const double* a, const double* b, const double* c)
   return (b[0]-a[0]) * (c[1]-a[1]) - (b[1]-a[1]) * (c[0]-a[0]);
 }
 
+// The rest frame of the 3D triangle (p0, p1, p2): Dm^-1 (column-major) of
+// its local 2D frame, and its area.
+inline void triangle_rest_frame(const double* p0, const double* p1, const double* p2, double* B, double& area)
+{
+  double e1[3], e2[3];
+  for(int k = 0; k < 3; ++k) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
+  const double l1 = std::sqrt(e1[0]*e1[0] + e1[1]*e1[1] + e1[2]*e1[2]);
+  const double x2 = (e1[0]*e2[0] + e1[1]*e2[1] + e1[2]*e2[2]) / l1;
+  const double y2 = std::sqrt((std::max)(0., e2[0]*e2[0] + e2[1]*e2[1] + e2[2]*e2[2] - x2*x2));
+  // Dm = [[l1, x2], [0, y2]]
+  B[0] = 1. / l1; B[1] = 0.; B[2] = -x2 / (l1 * y2); B[3] = 1. / y2;
+  area = 0.5 * l1 * y2;
+}
+
 // Corner c = 3*f + i is corner i of face f. Halfedge c is the halfedge of
 // face f that ENDS at corner c (it starts at prev(c)), as CGAL's per-halfedge
 // UV convention: get(uvmap, h) is the UV of target(h) in face(h).
@@ -78,18 +92,8 @@ struct Cut_mesh
     total_area = 0;
     for(std::size_t f = 0; f < nf; ++f)
     {
-      const double* p0 = &points[3 * corner_vertex[3*f]];
-      const double* p1 = &points[3 * corner_vertex[3*f+1]];
-      const double* p2 = &points[3 * corner_vertex[3*f+2]];
-      double e1[3], e2[3];
-      for(int k = 0; k < 3; ++k) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
-      const double l1 = std::sqrt(e1[0]*e1[0] + e1[1]*e1[1] + e1[2]*e1[2]);
-      const double x2 = (e1[0]*e2[0] + e1[1]*e2[1] + e1[2]*e2[2]) / l1;
-      const double y2 = std::sqrt(std::max(0., e2[0]*e2[0] + e2[1]*e2[1] + e2[2]*e2[2] - x2*x2));
-      // Dm = [[l1, x2], [0, y2]]
-      double* B = &rest_inverse[4*f];
-      B[0] = 1. / l1; B[1] = 0.; B[2] = -x2 / (l1 * y2); B[3] = 1. / y2;
-      face_area[f] = 0.5 * l1 * y2;
+      triangle_rest_frame(&points[3 * corner_vertex[3*f]], &points[3 * corner_vertex[3*f+1]],
+                          &points[3 * corner_vertex[3*f+2]], &rest_inverse[4*f], face_area[f]);
       total_area += face_area[f];
     }
   }

@@ -28,6 +28,7 @@
 #include <type_traits>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -441,6 +442,39 @@ private:
   std::size_t m_factorizations = 0;
   Optimization_timings m_timings;
 };
+
+// Newton iterations on the charts of `cm` from their UVs until convergence, `max_iterations` or `deadline`:
+// OK, WARNING_MAXIMUM_ITERATIONS, WARNING_TIME_LIMIT or ERROR_LINEAR_SOLVER
+// (with `message`).
+template <typename Energy, typename SolverTraits>
+Error_code descend(Cut_mesh& cm, const Energy& energy, const SolverTraits& solver, const Newton_settings& settings,
+                   std::size_t max_iterations, const Deadline& deadline, std::size_t& iterations,
+                   Optimization_timings& timings, std::string& message)
+{
+  Projected_newton<Energy, SolverTraits> newton(cm, energy, solver, settings);
+  Error_code status = WARNING_MAXIMUM_ITERATIONS;
+  if(!newton.rebuild_pattern())
+  {
+    message = "symbolic factorization failed";
+    status = ERROR_LINEAR_SOLVER;
+  }
+  else
+    while(newton.iterations() < max_iterations)
+    {
+      if(deadline.reached()) { status = WARNING_TIME_LIMIT; break; }
+      const Newton_status s = newton.step();
+      if(s == NEWTON_CONVERGED) { status = OK; break; }
+      if(s == NEWTON_SOLVER_FAILED)
+      {
+        message = "numeric factorization failed";
+        status = ERROR_LINEAR_SOLVER;
+        break;
+      }
+    }
+  iterations = newton.iterations();
+  timings = newton.timings();
+  return status;
+}
 
 } // namespace internal
 } // namespace Surface_mesh_seam_optimization
