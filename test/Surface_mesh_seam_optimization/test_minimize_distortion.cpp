@@ -499,6 +499,25 @@ BOOST_AUTO_TEST_CASE(the_coarse_to_fine_start_reaches_the_minimum_in_fewer_itera
   BOOST_TEST(it_c2f < it_direct);
 }
 
+// A mesh that does not simplify (separate triangles: no edge can collapse)
+// gives no coarse start, and its map is left as it was.
+BOOST_AUTO_TEST_CASE(a_mesh_that_does_not_simplify_keeps_its_initial_map)
+{
+  Surface_mesh sm;
+  for(int i = 0; i < 40; ++i)
+  {
+    const double x = 2. * i;
+    sm.add_face(sm.add_vertex(K::Point_3(x, 0, 0)), sm.add_vertex(K::Point_3(x + 1, 0, 0)),
+                sm.add_vertex(K::Point_3(x, 1, 0.1 * i)));
+  }
+  I::Cut_mesh cm = cut_mesh_with_initial_map(sm);
+  const std::vector<double> before = cm.uv;
+  std::vector<std::size_t> levels;
+  BOOST_TEST(!I::coarse_to_fine_start(cm, SMSO::Symmetric_Dirichlet_energy(), SMSO::Default_sparse_solver_traits(),
+                                      I::Newton_settings(), I::Deadline(), levels, 1));
+  BOOST_TEST(cm.uv == before);
+}
+
 // minimize_distortion() starts a mesh of 16000 faces or more from coarser
 // meshes: the octopus after one Loop step (24000 faces) is mapped from 6000
 // faces; its seams are those of the initial map, nothing flips.
@@ -526,4 +545,18 @@ BOOST_AUTO_TEST_CASE(minimize_distortion_starts_large_meshes_from_coarser_ones)
   BOOST_TEST(differ == 0u);
   const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
   BOOST_TEST(std::abs(m.distortion - r.distortion) <= 1e-9 * r.distortion);
+
+  // ARAP has no barrier: from Tutte's map its descent keeps squeezed
+  // triangles squeezed (male_2_f20000 and lucy_o_f24136 ended in
+  // ERROR_DEGENERATE_UV_RESULT); its coarse levels minimize E_SD, and the
+  // result is valid
+  auto uv3 = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv3").first;
+  const SMSO::Optimization_result arap = SMSO::minimize_distortion(sm, uv3, SMSO_np::energy(SMSO::ARAP_energy()));
+  BOOST_TEST_MESSAGE("ARAP: " << SMSO::get_error_message(arap.status) << " " << arap.message << "; "
+                     << arap.iterations << " iterations, ARAP " << arap.energy_value);
+  BOOST_TEST(arap.status == SMSO::OK);
+  BOOST_TEST(arap.message.find("started from coarser meshes of") == 0u, arap.message);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv3) == 0u);
+  BOOST_TEST(std::abs(SMSO::measure_uv_map(sm, uv3, SMSO_np::energy(SMSO::ARAP_energy())).distortion -
+                      arap.energy_value) <= 1e-9 * arap.energy_value);
 }

@@ -41,7 +41,9 @@ namespace Surface_mesh_seam_optimization {
 /// more); the coarsest mesh is minimized from the initial map at its
 /// vertices, and each level's minimum is carried to the next finer one by
 /// undoing the collapses, every returning vertex placed where its triangles
-/// are valid and then relaxed alone. This spares the long first phase of
+/// are valid and then relaxed alone (the coarse levels minimize E_SD when
+/// `energy` has no barrier, as `ARAP_energy`: its own descent would keep the
+/// squeezed triangles of Tutte's map). This spares the long first phase of
 /// the descent from Tutte's map, whose squeezed triangles cut every step
 /// short (lucy_o_f24136: 4.0 s instead of 7.5 s; lucy at 96544 faces: 42 s
 /// instead of 110 s). The energy is not convex: the result is a minimum too,
