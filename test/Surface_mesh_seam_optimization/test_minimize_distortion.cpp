@@ -499,6 +499,29 @@ BOOST_AUTO_TEST_CASE(the_coarse_to_fine_start_reaches_the_minimum_in_fewer_itera
   BOOST_TEST(it_c2f < it_direct);
 }
 
+// ARAP has no barrier: from Tutte's map, whose octopus tentacles are
+// squeezed below 1e-12 of the chart, its descent kept them squeezed and
+// ended in ERROR_DEGENERATE_UV_RESULT. From the default map it now descends
+// from E_SD's minimum: a valid map, at an ARAP value below E_SD's minimum's.
+BOOST_AUTO_TEST_CASE(arap_from_the_default_map_descends_from_the_minimum_of_e_sd)
+{
+  Surface_mesh sm = read_octopus();
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  const SMSO::Optimization_result sd = SMSO::minimize_distortion(sm, uv);
+  BOOST_REQUIRE(sd.status == SMSO::OK);
+  const double arap_of_sd_minimum = SMSO::measure_uv_map(sm, uv, SMSO_np::energy(SMSO::ARAP_energy())).distortion;
+  auto uv2 = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv2").first;
+  const SMSO::Optimization_result arap = SMSO::minimize_distortion(sm, uv2, SMSO_np::energy(SMSO::ARAP_energy()));
+  BOOST_TEST_MESSAGE("octopus, ARAP: " << SMSO::get_error_code_name(arap.status) << ", " << arap.iterations
+                     << " iterations (E_SD's alone " << sd.iterations << "), ARAP " << arap.energy_value
+                     << " (at E_SD's minimum " << arap_of_sd_minimum << ")");
+  BOOST_TEST(arap.status == SMSO::OK);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv2) == 0u);
+  BOOST_TEST(arap.iterations > sd.iterations);
+  BOOST_TEST(arap.energy_value < arap_of_sd_minimum);
+  BOOST_TEST(arap.initial_distortion == sd.initial_distortion); // the same start
+}
+
 // A mesh that does not simplify (separate triangles: no edge can collapse)
 // gives no coarse start, and its map is left as it was.
 BOOST_AUTO_TEST_CASE(a_mesh_that_does_not_simplify_keeps_its_initial_map)
@@ -546,10 +569,7 @@ BOOST_AUTO_TEST_CASE(minimize_distortion_starts_large_meshes_from_coarser_ones)
   const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
   BOOST_TEST(std::abs(m.distortion - r.distortion) <= 1e-9 * r.distortion);
 
-  // ARAP has no barrier: from Tutte's map its descent keeps squeezed
-  // triangles squeezed (male_2_f20000 and lucy_o_f24136 ended in
-  // ERROR_DEGENERATE_UV_RESULT); its coarse levels minimize E_SD, and the
-  // result is valid
+  // ARAP (no barrier) through the coarse levels, then E_SD's minimum: valid
   auto uv3 = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv3").first;
   const SMSO::Optimization_result arap = SMSO::minimize_distortion(sm, uv3, SMSO_np::energy(SMSO::ARAP_energy()));
   BOOST_TEST_MESSAGE("ARAP: " << SMSO::get_error_message(arap.status) << " " << arap.message << "; "

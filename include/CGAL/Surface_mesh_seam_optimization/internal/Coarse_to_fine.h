@@ -15,11 +15,9 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_COARSE_TO_FINE_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_COARSE_TO_FINE_H
 
-#include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Mesh_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Multiresolution.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 
@@ -411,12 +409,6 @@ bool coarse_to_fine_start(Cut_mesh& cm, const Energy& energy, const SolverTraits
                           std::vector<std::size_t>& level_faces,
                           std::size_t minimum_faces = coarse_to_fine_minimum_faces)
 {
-  // A descent of an energy with no barrier (ARAP) keeps the squeezed
-  // triangles of Tutte's map squeezed (to a degenerate result on dense
-  // meshes): its coarse levels minimize E_SD, whose barrier expands them.
-  if(!is_barrier_energy(energy))
-    return coarse_to_fine_start(cm, Symmetric_Dirichlet_energy(), solver, settings, deadline, level_faces,
-                                minimum_faces);
   Coarse_level level;
   const std::size_t target = std::size_t(double(cm.number_of_faces()) / coarse_to_fine_ratio);
   if(!simplify_uv_mesh(cm, target, level)) return false;
