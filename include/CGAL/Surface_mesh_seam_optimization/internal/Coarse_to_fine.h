@@ -4,13 +4,15 @@
 // A start for distortion only on large meshes: Tutte's map of a dense chart
 // squeezes its inner triangles by orders of magnitude, and the flip-free
 // Newton descent then needs ~100 short steps, each a factorization, before
-// it converges. Instead the UV mesh is simplified by edge collapses, the
-// coarse mesh mapped, and the collapses undone in reverse. A returning vertex
-// only changes its own faces, which were valid with the kept vertex in its
-// place: a point close to the kept vertex, inside the wedge of the two faces
-// on the collapsed edge, makes them valid. The vertex goes to the mean of its
-// ring where that is valid, else toward it from that wedge point, and is
-// then relaxed alone (Newton on its two unknowns, flip-free).
+// it converges. Instead the UV mesh is simplified by edge collapses that
+// flip no triangle of that map (which so stays a valid map of every level),
+// the coarsest level's map minimized, and the collapses undone in reverse,
+// each level's map minimized in turn. A returning vertex only changes its
+// own faces, which were valid with the kept vertex in its place: a point
+// close to the kept vertex, inside the wedge of the two faces on the
+// collapsed edge, makes them valid. The vertex goes to the mean of its ring
+// where that is valid, else toward it from that wedge point, and is then
+// relaxed alone (Newton on its two unknowns, flip-free).
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_COARSE_TO_FINE_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_COARSE_TO_FINE_H
@@ -250,9 +252,8 @@ public:
         const double ex = energy_at(x);
         if(ex <= e + 1e-4 * t * d.dot(g))
         {
-          moved = ex < e;
+          moved = e - ex > 1e-10 * e; // else converged
           p[0] = x[0]; p[1] = x[1];
-          if(!(e - ex > 1e-10 * e)) moved = false;
           e = ex;
           break;
         }
