@@ -46,12 +46,14 @@ namespace Surface_mesh_seam_optimization {
 /// more); the coarsest mesh is minimized from the initial map at its
 /// vertices, and each level's minimum is carried to the next finer one by
 /// undoing the collapses, every returning vertex placed where its triangles
-/// are valid and then relaxed alone. This spares the long first phase of
-/// the descent from Tutte's map, whose squeezed triangles cut every step
-/// short (lucy_o_f24136: 4.0 s instead of 7.5 s; lucy at 96544 faces: 42 s
-/// instead of 110 s). The energy is not convex: the result is a minimum too,
-/// not always the same one (E_SD within 0.1% on the benchmark's meshes of
-/// 20000 faces and on lucy, 0.7% apart on the octopus).
+/// are valid and relaxed alone, then all relaxed again in three sweeps. This
+/// spares the long first phase of the descent from Tutte's map, whose
+/// squeezed triangles cut every step short (lucy_o_f24136: 4.8 s instead of
+/// 7.5 s; lucy at 96544 faces: 43 s instead of 110 s; CGAL's man.off, 34986
+/// faces: 9 s instead of 37 s; slower on a few meshes, as CGAL's blade.off:
+/// 35 s instead of 25 s). The energy is not convex: the result is a minimum
+/// too, not always the same one (E_SD within 0.9% on 20 meshes of 16000 to
+/// 97000 faces, 1.1% apart on the octopus).
 /// `Optimization_result::message` names the coarser levels; if any part of
 /// the coarse start fails, the descent starts from the initial map. A map
 /// given with `use_uv_map_as_initial` is always the start.
