@@ -296,14 +296,9 @@ bool prolong_uv_map(const Cut_mesh& cm, const Coarse_level& level, const Energy&
       int i = 0;
       while(faces[0][i] != r) ++i;
       const int a = faces[0][(i + 1) % 3], b = faces[0][(i + 2) % 3]; // (r, a, b) counterclockwise
-      const double* R = &cm.points[3 * cm.uv_vertex[r]];
-      const double* A = &cm.points[3 * cm.uv_vertex[a]];
-      const double* Bp = &cm.points[3 * cm.uv_vertex[b]];
-      double ab[3], ar[3];
-      for(int k = 0; k < 3; ++k) { ab[k] = Bp[k] - A[k]; ar[k] = R[k] - A[k]; }
-      const double l = std::sqrt(ab[0]*ab[0] + ab[1]*ab[1] + ab[2]*ab[2]);
-      const double x = (ar[0]*ab[0] + ar[1]*ab[1] + ar[2]*ab[2]) / l;
-      const double y = std::sqrt((std::max)(0., ar[0]*ar[0] + ar[1]*ar[1] + ar[2]*ar[2] - x * x));
+      double l, x, y; // r in the plane of (a, b, r), a at the origin, b on the x axis
+      triangle_local_frame(&cm.points[3 * cm.uv_vertex[a]], &cm.points[3 * cm.uv_vertex[b]],
+                           &cm.points[3 * cm.uv_vertex[r]], l, x, y);
       const double ux = uv[2*b] - uv[2*a], uy = uv[2*b+1] - uv[2*a+1];
       const double s = 1. / l; // (x, y) in units of |ab|, rotated and scaled onto a -> b in UV
       target[0] = uv[2*a] + s * (x * ux - y * uy);

@@ -23,15 +23,24 @@ inline double signed_area2(const double* a, const double* b, const double* c)
   return (b[0]-a[0]) * (c[1]-a[1]) - (b[1]-a[1]) * (c[0]-a[0]);
 }
 
+// The 3D triangle (p0, p1, p2) in its own plane: p0 at the origin, p1 at
+// (l1, 0), p2 at (x2, y2) with y2 >= 0.
+inline void triangle_local_frame(const double* p0, const double* p1, const double* p2,
+                                 double& l1, double& x2, double& y2)
+{
+  double e1[3], e2[3];
+  for(int k = 0; k < 3; ++k) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
+  l1 = std::sqrt(e1[0]*e1[0] + e1[1]*e1[1] + e1[2]*e1[2]);
+  x2 = (e1[0]*e2[0] + e1[1]*e2[1] + e1[2]*e2[2]) / l1;
+  y2 = std::sqrt((std::max)(0., e2[0]*e2[0] + e2[1]*e2[1] + e2[2]*e2[2] - x2*x2));
+}
+
 // The rest frame of the 3D triangle (p0, p1, p2): Dm^-1 (column-major) of
 // its local 2D frame, and its area.
 inline void triangle_rest_frame(const double* p0, const double* p1, const double* p2, double* B, double& area)
 {
-  double e1[3], e2[3];
-  for(int k = 0; k < 3; ++k) { e1[k] = p1[k] - p0[k]; e2[k] = p2[k] - p0[k]; }
-  const double l1 = std::sqrt(e1[0]*e1[0] + e1[1]*e1[1] + e1[2]*e1[2]);
-  const double x2 = (e1[0]*e2[0] + e1[1]*e2[1] + e1[2]*e2[2]) / l1;
-  const double y2 = std::sqrt((std::max)(0., e2[0]*e2[0] + e2[1]*e2[1] + e2[2]*e2[2] - x2*x2));
+  double l1, x2, y2;
+  triangle_local_frame(p0, p1, p2, l1, x2, y2);
   // Dm = [[l1, x2], [0, y2]]
   B[0] = 1. / l1; B[1] = 0.; B[2] = -x2 / (l1 * y2); B[3] = 1. / y2;
   area = 0.5 * l1 * y2;
