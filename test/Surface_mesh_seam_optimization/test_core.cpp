@@ -670,6 +670,68 @@ BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newto
   BOOST_TEST(r.iterations <= 6);
 }
 
+// Truncated conjugate gradients (Steihaug) on an indefinite matrix,
+// preconditioned by the factor of a positive definite one of the same
+// pattern: the plain solve gives up, the truncated one returns a step that
+// raises the model b.x - x.A.x / 2 and stays within the radius; on a
+// positive definite matrix it is the plain solve.
+BOOST_AUTO_TEST_CASE(truncated_conjugate_gradients_stop_at_negative_curvature_within_the_radius)
+{
+  Surface_mesh sm = planar_grid(10, 3);
+  const int n = int(2 * num_vertices(sm));
+  auto matrix = [&](double shift) {
+    std::vector<Eigen::Triplet<double> > t;
+    for(int d = 0; d < n; ++d) t.emplace_back(d, d, shift + 0.01 * (d % 7));
+    for(auto e : edges(sm))
+      for(int c = 0; c < 2; ++c)
+      {
+        const int a = 2 * int(source(halfedge(e, sm), sm)) + c, b = 2 * int(target(halfedge(e, sm), sm)) + c;
+        t.emplace_back(a, a, 1.);
+        t.emplace_back(b, b, 1.);
+        t.emplace_back((std::max)(a, b), (std::min)(a, b), -1.);
+      }
+    Eigen::SparseMatrix<double> A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  };
+  const Eigen::SparseMatrix<double> A_spd = matrix(0.05), A_indefinite = matrix(-0.03);
+  Eigen::VectorXd b(n);
+  for(int i = 0; i < n; ++i) b[i] = std::cos(0.61 * i);
+  SMSO::Eigen_simplicial_ldlt_traits factor;
+  BOOST_REQUIRE(factor.analyze_pattern(A_spd) && factor.factorize(A_spd));
+  Eigen::VectorXd x0;
+  BOOST_REQUIRE(factor.solve(b, x0));
+  auto model = [&](const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& x) {
+    return b.dot(x) - 0.5 * x.dot(A.selfadjointView<Eigen::Lower>() * x);
+  };
+
+  Eigen::VectorXd x;
+  SMSO::internal::Stale_factor_cg_result r =
+    SMSO::internal::stale_factor_cg(A_indefinite, factor, b, x, 1e-10, 50);
+  BOOST_TEST(!r.converged);
+  for(double radius : { 0., 2., 4. })
+  {
+    r = SMSO::internal::stale_factor_cg(A_indefinite, factor, b, x, 1e-10, 50, true, radius);
+    BOOST_TEST_MESSAGE("radius " << radius << ": " << r.iterations << " iterations, negative curvature "
+                       << r.negative_curvature << ", on the radius " << r.on_radius);
+    BOOST_TEST(r.converged);
+    BOOST_TEST((r.negative_curvature || r.on_radius));
+    BOOST_TEST(r.iterations >= 1);
+    BOOST_TEST(x.allFinite());
+    BOOST_TEST(b.dot(x) > 0); // a descent direction for a gradient -b
+    BOOST_TEST(model(A_indefinite, x) > model(A_indefinite, x0)); // better than the first iterate
+    if(radius > 0) BOOST_TEST(x.norm() <= radius * x0.norm() * (1 + 1e-12));
+  }
+
+  // positive definite: truncation changes nothing
+  Eigen::VectorXd plain, truncated;
+  const Eigen::SparseMatrix<double> A_other = matrix(0.08);
+  BOOST_REQUIRE(SMSO::internal::stale_factor_cg(A_other, factor, b, plain, 1e-10, 50).converged);
+  BOOST_REQUIRE(SMSO::internal::stale_factor_cg(A_other, factor, b, truncated, 1e-10, 50, true, 4.).converged);
+  BOOST_TEST((plain - truncated).norm() == 0.);
+  BOOST_TEST((b - A_other.selfadjointView<Eigen::Lower>() * plain).norm() <= 1e-10 * b.norm());
+}
+
 BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_fewer_factorizations)
 {
   // A curved patch (not developable) from a strongly distorted start.
@@ -739,6 +801,54 @@ BOOST_AUTO_TEST_CASE(extrapolated_full_steps_reach_the_same_minimum_in_fewer_ite
   BOOST_TEST(step_extrapolated >= 2.);
   BOOST_TEST(std::abs(e_extrapolated - e_plain) <= 1e-9 * e_plain);
   BOOST_TEST(it_extrapolated < it_plain);
+}
+
+// The same bump: after full steps, steps along the exact Hessian's model
+// (truncated conjugate gradients with the last projected factor) reach the
+// same minimum in fewer iterations, without a new factorization for them
+// and never through a flipped triangle.
+BOOST_AUTO_TEST_CASE(exact_curvature_steps_reach_the_same_minimum_in_fewer_iterations)
+{
+  Surface_mesh sm = planar_grid(14, 7);
+  for(auto v : vertices(sm))
+  {
+    const Point_3 p = sm.point(v);
+    const double x = (p.x() - 7) / 7, y = (p.y() - 7) / 7;
+    sm.point(v) = Point_3(x, y, 2.5 * std::exp(-4 * (x * x + y * y)));
+  }
+  Cut_mesh cm = one_chart(sm);
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = 0.7 * p[0];
+    cm.uv[2*u+1] = 0.7 * p[1];
+  }
+  auto run = [&](int exact_iterations, std::size_t& iterations, std::size_t& exact_steps,
+                 std::size_t& factorizations) {
+    Cut_mesh c = cm;
+    SMSO::internal::Newton_settings settings; // as minimize_distortion()
+    settings.extrapolation_limit = 16;
+    settings.exact_curvature_iterations = exact_iterations;
+    settings.relative_decrease_tolerance = 1e-13;
+    return descend(c, settings, 1000, [&](const auto& newton) {
+      for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
+      iterations = newton.iterations();
+      exact_steps = newton.exact_curvature_steps();
+      factorizations = newton.factorizations();
+    });
+  };
+  std::size_t it_projected = 0, exact_projected = 0, f_projected = 0, it_exact = 0, exact_steps = 0, f_exact = 0;
+  const double e_projected = run(0, it_projected, exact_projected, f_projected);
+  const double e_exact = run(10, it_exact, exact_steps, f_exact);
+  BOOST_TEST_MESSAGE("iterations: projected " << it_projected << " (" << f_projected << " factorizations), "
+                     << "with exact-curvature steps " << it_exact << " (" << exact_steps << " exact, " << f_exact
+                     << " factorizations); E_SD " << e_projected << " " << e_exact);
+  BOOST_TEST(e_projected > 5.); // far from an isometry
+  BOOST_TEST(exact_projected == 0u);
+  BOOST_TEST(exact_steps > 0u);
+  BOOST_TEST(std::abs(e_exact - e_projected) <= 1e-9 * e_projected);
+  BOOST_TEST(it_exact < it_projected);
+  BOOST_TEST(f_exact < f_projected);
 }
 
 BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)

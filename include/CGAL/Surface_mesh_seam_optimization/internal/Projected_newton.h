@@ -108,7 +108,23 @@ struct Newton_settings
   // factor and the flip-free bound (energy evaluations only). 1: never
   // (the seam loop's setting, see Setup_seam_optimization.h).
   double extrapolation_limit = 1;
+  // The projected Hessian's missing curvature also makes the tail linear
+  // (full steps that each gain 1e-5). After a full step, the next one
+  // minimizes the exact Hessian's quadratic model by conjugate gradients
+  // preconditioned by the last factor of a projected Hessian, truncated at
+  // negative curvature, at this many iterations, or at a radius (the exact
+  // Hessian is indefinite away from the minimum, and nearly flat directions
+  // would blow the step up): at first 4 times the length of the step the
+  // factor alone gives, doubled after a full step that reached it, halved
+  // (down to 1) after one the line search shortened, as a trust region's.
+  // No solver ever factorizes an indefinite matrix. 0: never (the seam
+  // loop's setting: its stationary points would move, and its topology
+  // decisions with them).
+  int exact_curvature_iterations = 0;
 };
+
+// the first radius (see Newton_settings::exact_curvature_iterations)
+constexpr double exact_curvature_radius = 4;
 
 enum Newton_status { NEWTON_PROGRESS, NEWTON_CONVERGED, NEWTON_SOLVER_FAILED };
 
@@ -167,30 +183,46 @@ public:
   std::size_t iterations() const { return m_iterations; }
   // iterations whose step needed a new factorization (the others reused the last one)
   std::size_t factorizations() const { return m_factorizations; }
+  // iterations whose step came from the exact Hessian's model (see Newton_settings::exact_curvature_iterations)
+  std::size_t exact_curvature_steps() const { return m_exact_steps; }
 
   // One projected Newton iteration.
   Newton_status step()
   {
     load();
     Phase_timer assembly(m_timings.assembly);
-    const double e0 = assemble();
+    bool exact = m_full_step && m_reuse_factor && m_settings.exact_curvature_iterations > 0, on_radius = false;
+    const double e0 = assemble(!exact);
     assembly.stop();
     const double A = m_cm.total_area;
     m_gradient_norm2 = m_gradient.squaredNorm() * A;
     if(m_gradient_norm2 < m_settings.gradient_tolerance) return NEWTON_CONVERGED;
+    regularize();
 
-    // Regularize the rigid-motion null space of a free-boundary chart.
-    double mean_diag = 0;
-    double* values = m_H.valuePtr();
-    for(int i : m_diagonal) mean_diag += values[i];
-    mean_diag /= double(m_diagonal.size());
-    for(int i : m_diagonal) values[i] += 1e-10 * mean_diag;
-
+    const Eigen::VectorXd rhs = -m_gradient;
+    if(exact)
+    {
+      Phase_timer solve(m_timings.factorization);
+      const Stale_factor_cg_result r =
+        stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
+                        m_settings.exact_curvature_iterations, true, m_radius_factor);
+      exact = r.converged && m_direction.allFinite() && rhs.dot(m_direction) > 0;
+      on_radius = r.on_radius;
+      solve.stop();
+      if(exact) ++m_exact_steps;
+      else
+      {
+        Phase_timer assembly_again(m_timings.assembly);
+        assemble(true);
+        assembly_again.stop();
+        regularize();
+      }
+    }
     Phase_timer factorization(m_timings.factorization);
-    Eigen::VectorXd rhs = -m_gradient;
-    const bool inexact = m_reuse_factor && m_settings.stale_factor_iterations > 0 &&
-                         stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
-                                         m_settings.stale_factor_iterations).converged;
+    const bool inexact = exact ||
+                         (m_reuse_factor && m_settings.stale_factor_iterations > 0 &&
+                          stale_factor_cg(m_H, m_solver, rhs, m_direction, m_settings.stale_factor_tolerance,
+                                          m_settings.stale_factor_iterations).converged);
     if(!inexact)
     {
       if(!m_solver.factorize(m_H)) return NEWTON_SOLVER_FAILED;
@@ -231,6 +263,9 @@ public:
       }
     }
     ++m_iterations;
+    m_full_step = t >= 1. && e < e0;
+    // (a trust-region update of the radius)
+    if(exact && on_radius) m_radius_factor = t >= 1. ? 2 * m_radius_factor : (std::max)(1., 0.5 * m_radius_factor);
     // Only an exact step decides that the iterate is stationary: a stalled
     // inexact one would stop the descent short of the stationary point
     // (higher E_SD at the topology step: more cuts, measured).
@@ -373,8 +408,19 @@ private:
     return int(std::lower_bound(begin, end, row) - m_H.innerIndexPtr());
   }
 
-  // Gradient and projected Hessian at the current UVs; returns the energy.
-  double assemble()
+  // Regularize the rigid-motion null space of a free-boundary chart.
+  void regularize()
+  {
+    double mean_diag = 0;
+    double* values = m_H.valuePtr();
+    for(int i : m_diagonal) mean_diag += values[i];
+    mean_diag /= double(m_diagonal.size());
+    for(int i : m_diagonal) values[i] += 1e-10 * mean_diag;
+  }
+
+  // Gradient and Hessian at the current UVs (the charts' exact one unless
+  // `project`; the scaffold's always projected); returns the energy.
+  double assemble(bool project = true)
   {
     const std::size_t nf = m_cm.number_of_faces();
     std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
@@ -400,7 +446,7 @@ private:
     {
       face_jacobian(m_cm, f, m_x.data(), J);
       const double w = m_cm.face_area[f] * inv_area;
-      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, true);
+      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, project);
       element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), w, dJ, HJ, g, &H);
       add(f);
     }
@@ -439,7 +485,9 @@ private:
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
   bool m_reuse_factor = false; // the last factorization may precondition the next step (same pattern, no stall since)
-  std::size_t m_factorizations = 0;
+  std::size_t m_factorizations = 0, m_exact_steps = 0;
+  bool m_full_step = false; // the last step was full: the next may try the exact curvature
+  double m_radius_factor = exact_curvature_radius; // of exact-curvature steps, times the factor's step
   Optimization_timings m_timings;
 };
 

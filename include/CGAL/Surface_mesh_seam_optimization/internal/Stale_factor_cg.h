@@ -12,6 +12,7 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
 
 namespace CGAL {
@@ -22,6 +23,8 @@ struct Stale_factor_cg_result
 {
   bool converged = false;
   int iterations = 0; // conjugate gradient iterations (one triangular solve pair each)
+  bool negative_curvature = false; // A is not positive along a search direction
+  bool on_radius = false; // truncated at the radius
 };
 
 // Solves A x = b to |b - A x| <= tolerance |b|, A symmetric positive
@@ -32,14 +35,22 @@ struct Stale_factor_cg_result
 // the tolerance within `max_iterations`: a stale factor shows itself in the
 // first iterations, and giving up then wastes little (Eigen's
 // ConjugateGradient would run to its maximum).
+//
+// With `truncate` (A may be indefinite: the minimization of the quadratic
+// model b.x - x.A.x / 2 is truncated as in Steihaug's method), the iterate
+// reached at negative curvature, at `max_iterations`, or on the sphere of
+// radius `radius_factor` times the first iterate's norm (if > 0) counts as
+// converged: it still raises the model, but is no solution of A x = b.
 template <typename SolverTraits>
 Stale_factor_cg_result stale_factor_cg(const Eigen::SparseMatrix<double>& A_lower, SolverTraits& solver,
                                        const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                                       double tolerance, int max_iterations)
+                                       double tolerance, int max_iterations, bool truncate = false,
+                                       double radius_factor = 0)
 {
   Stale_factor_cg_result result;
   const auto A = A_lower.template selfadjointView<Eigen::Lower>();
   if(!solver.solve(b, x)) return result;
+  const double radius = radius_factor * x.norm();
   Eigen::VectorXd r = b - A * x;
   const double r_tol = tolerance * b.norm();
   double r_norm = r.norm();
@@ -54,14 +65,28 @@ Stale_factor_cg_result stale_factor_cg(const Eigen::SparseMatrix<double>& A_lowe
     result.iterations = it;
     Ap = A * p;
     const double pAp = p.dot(Ap);
-    if(!(pAp > 0)) return result;
-    const double alpha = rz / pAp;
+    if(!(pAp > 0)) {
+      result.negative_curvature = true;
+      result.converged = truncate;
+      return result;
+    }
+    double alpha = rz / pAp;
+    if(radius > 0 && (x + alpha * p).norm() > radius)
+    {
+      // to the sphere: |x + a p| = radius
+      const double pp = p.squaredNorm(), xp = x.dot(p), xx = x.squaredNorm();
+      alpha = (-xp + std::sqrt((std::max)(0., xp * xp + pp * (radius * radius - xx)))) / pp;
+      x += alpha * p;
+      result.on_radius = true;
+      result.converged = truncate;
+      return result;
+    }
     x += alpha * p;
     r -= alpha * Ap;
     r_norm = r.norm();
     if(r_norm <= r_tol) { result.converged = true; return result; }
-    if(it == max_iterations) return result;
-    if(it >= 2)
+    if(it == max_iterations) { result.converged = truncate; return result; }
+    if(it >= 2 && !truncate)
     {
       const double rate = std::pow(r_norm / r0, 1. / it);
       if(r_norm * std::pow(rate, max_iterations - it) > r_tol) return result;
