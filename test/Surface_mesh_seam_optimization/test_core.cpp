@@ -304,6 +304,17 @@ BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
   BOOST_TEST((x_default - x_ldlt).norm() <= 1e-10 * x_ldlt.norm());
   BOOST_TEST((A.selfadjointView<Eigen::Lower>() * x_default - b).norm() <= 1e-10 * b.norm());
 
+  // nested dissection (minimize_distortion()'s choice): the same solution, in other rounding
+  Eigen::VectorXd x_nd;
+  SMSO::Default_sparse_solver_traits nd(1000, true);
+  BOOST_REQUIRE(nd.analyze_pattern(A) && nd.factorize(A) && nd.solve(b, x_nd));
+  BOOST_TEST((A.selfadjointView<Eigen::Lower>() * x_nd - b).norm() <= 1e-10 * b.norm());
+  BOOST_TEST((x_nd - x_default).norm() <= 1e-10 * x_default.norm());
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+  BOOST_TEST(nd.uses_cholmod());
+  BOOST_TEST((x_nd - x_default).norm() > 0.); // (another ordering was used)
+#endif
+
   // indefinite: diag(2, -1, 3) with a coupling; LDL^T solves it
   Matrix M(3, 3);
   M.insert(0, 0) = 2.; M.insert(1, 1) = -1.; M.insert(2, 2) = 3.; M.insert(2, 0) = 0.5;

@@ -155,8 +155,9 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
     result.status = ERROR_WRONG_PARAMETER;
     return result;
   }
+  // (one pattern per level: nested dissection pays)
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                 Default_sparse_solver_traits());
+                                 Default_sparse_solver_traits(40000, true));
   const std::size_t max_iterations =
     internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
   internal::Newton_settings settings;
