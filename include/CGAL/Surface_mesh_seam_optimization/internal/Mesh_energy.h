@@ -111,6 +111,21 @@ bool is_barrier_energy(const Energy& energy)
   return energy.value(J) > 1e4;
 }
 
+// Faces whose UV area is below the area floor of a descent with an energy
+// that is no barrier (Newton_settings::area_floor: `floor` times the face's
+// 3D area at the map's mean area ratio); such a descent cannot expand them.
+inline std::size_t number_of_faces_below_area_floor(const Cut_mesh& cm, double floor)
+{
+  const std::size_t nf = cm.number_of_faces();
+  double uv_area2 = 0;
+  for(std::size_t f = 0; f < nf; ++f) uv_area2 += cm.signed_uv_area2(f);
+  const double ratio = floor * uv_area2 / cm.total_area;
+  std::size_t n = 0;
+  for(std::size_t f = 0; f < nf; ++f)
+    if(cm.signed_uv_area2(f) < ratio * cm.face_area[f]) ++n;
+  return n;
+}
+
 // The E_SD bound allowing the small strains that `bound` allows `energy`: at
 // singular values (1 + h, 1), E_SD - 4 ~ 4 h^2; the energy's own curvature
 // there is measured (ARAP: h^2, so ARAP 0.025 gives E_SD 4.1).
