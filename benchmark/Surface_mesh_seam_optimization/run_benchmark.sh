@@ -25,7 +25,7 @@
 #   --time-limit S (scaling) cancel optimize_seams() past S seconds (default 900); a
 #                  size predicted to take over 1.5 S, or larger than one that was
 #                  cancelled, is not run
-#   --converge-max-faces N (scaling) default 100000
+#   --converge-max-faces N (scaling) default 400000
 #   --max-faces N  (scaling) leave out the meshes with more than N faces
 #   --append FILE  (scaling) also put the Markdown report into FILE, replacing the
 #                  section of an earlier scaling run
@@ -50,7 +50,7 @@ mode=full
 timeout_s=
 time_limit=900
 max_faces=0
-converge_max_faces=100000
+converge_max_faces=400000
 append_to=
 bound=4.1
 bijective=1
