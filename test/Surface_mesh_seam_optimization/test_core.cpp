@@ -327,6 +327,21 @@ BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
   BOOST_TEST((M.selfadjointView<Eigen::Lower>() * y - c).norm() <= 1e-12);
 }
 
+BOOST_AUTO_TEST_CASE(timings_add_phase_by_phase)
+{
+  SMSO::Optimization_timings a, b;
+  a.assembly = 1; a.factorization = 2; a.symbolic_analysis = 3; a.line_search = 4; a.topology = 5; a.scaffold = 6;
+  b.assembly = 0.5; b.factorization = 0.25; b.scaffold = 8;
+  a += b;
+  BOOST_TEST(a.assembly == 1.5);
+  BOOST_TEST(a.factorization == 2.25);
+  BOOST_TEST(a.symbolic_analysis == 3.);
+  BOOST_TEST(a.line_search == 4.);
+  BOOST_TEST(a.topology == 5.);
+  BOOST_TEST(a.scaffold == 14.);
+  BOOST_TEST(a.total() == 29.75);
+}
+
 BOOST_AUTO_TEST_CASE(named_parameters_combine_in_any_order)
 {
   Surface_mesh sm;

@@ -29,6 +29,18 @@ struct Optimization_timings
   {
     return assembly + factorization + symbolic_analysis + line_search + topology + scaffold;
   }
+
+  /// adds the seconds of another optimization, phase by phase
+  Optimization_timings& operator+=(const Optimization_timings& other)
+  {
+    assembly += other.assembly;
+    factorization += other.factorization;
+    symbolic_analysis += other.symbolic_analysis;
+    line_search += other.line_search;
+    topology += other.topology;
+    scaffold += other.scaffold;
+    return *this;
+  }
 };
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef

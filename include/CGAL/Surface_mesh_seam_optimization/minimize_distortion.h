@@ -233,10 +233,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
     result.status = internal::descend(cm, energy, solver, settings, max_iterations - sd_iterations, deadline,
                                       result.iterations, result.timings, result.message);
   result.iterations += sd_iterations;
-  result.timings.assembly += sd_timings.assembly;
-  result.timings.factorization += sd_timings.factorization;
-  result.timings.symbolic_analysis += sd_timings.symbolic_analysis;
-  result.timings.line_search += sd_timings.line_search;
+  result.timings += sd_timings;
   if(result.status == ERROR_LINEAR_SOLVER) return result;
   // (the line search never allows it: a last check before anything is written)
   if(internal::count_invalid_uv_triangles(cm, &result.message) > 0)
