@@ -141,6 +141,27 @@ Cut_mesh curved_patch(double sx, double sy)
   return cm;
 }
 
+// A tall bump (height 2.5 over a 2 x 2 square) pressed flat: its plan view
+// scaled by 0.7 as the map, so that many triangles are compressed.
+Cut_mesh pressed_bump()
+{
+  Surface_mesh sm = planar_grid(14, 7);
+  for(auto v : vertices(sm))
+  {
+    const Point_3 p = sm.point(v);
+    const double x = (p.x() - 7) / 7, y = (p.y() - 7) / 7;
+    sm.point(v) = Point_3(x, y, 2.5 * std::exp(-4 * (x * x + y * y)));
+  }
+  Cut_mesh cm = one_chart(sm);
+  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
+  {
+    const double* p = &cm.points[3 * cm.uv_vertex[u]];
+    cm.uv[2*u] = 0.7 * p[0];
+    cm.uv[2*u+1] = 0.7 * p[1];
+  }
+  return cm;
+}
+
 // Projected Newton (symmetric Dirichlet, SimplicialLDLT) on `c` until it
 // converges or takes `max_steps` steps, checking that the energy never
 // rises; `after_step(newton)` after every step. Returns the last energy.
@@ -790,20 +811,7 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
 // same minimum in fewer iterations, never through a flipped triangle.
 BOOST_AUTO_TEST_CASE(extrapolated_full_steps_reach_the_same_minimum_in_fewer_iterations)
 {
-  Surface_mesh sm = planar_grid(14, 7);
-  for(auto v : vertices(sm))
-  {
-    const Point_3 p = sm.point(v);
-    const double x = (p.x() - 7) / 7, y = (p.y() - 7) / 7;
-    sm.point(v) = Point_3(x, y, 2.5 * std::exp(-4 * (x * x + y * y)));
-  }
-  Cut_mesh cm = one_chart(sm);
-  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-  {
-    const double* p = &cm.points[3 * cm.uv_vertex[u]];
-    cm.uv[2*u] = 0.7 * p[0];
-    cm.uv[2*u+1] = 0.7 * p[1];
-  }
+  const Cut_mesh cm = pressed_bump();
   auto run = [&](double limit, std::size_t& iterations, double& longest_step) {
     Cut_mesh c = cm;
     SMSO::internal::Newton_settings settings;
@@ -835,20 +843,7 @@ BOOST_AUTO_TEST_CASE(extrapolated_full_steps_reach_the_same_minimum_in_fewer_ite
 // and never through a flipped triangle.
 BOOST_AUTO_TEST_CASE(exact_curvature_steps_reach_the_same_minimum_in_fewer_iterations)
 {
-  Surface_mesh sm = planar_grid(14, 7);
-  for(auto v : vertices(sm))
-  {
-    const Point_3 p = sm.point(v);
-    const double x = (p.x() - 7) / 7, y = (p.y() - 7) / 7;
-    sm.point(v) = Point_3(x, y, 2.5 * std::exp(-4 * (x * x + y * y)));
-  }
-  Cut_mesh cm = one_chart(sm);
-  for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
-  {
-    const double* p = &cm.points[3 * cm.uv_vertex[u]];
-    cm.uv[2*u] = 0.7 * p[0];
-    cm.uv[2*u+1] = 0.7 * p[1];
-  }
+  const Cut_mesh cm = pressed_bump();
   auto run = [&](int exact_iterations, std::size_t& iterations, std::size_t& exact_steps,
                  std::size_t& factorizations) {
     Cut_mesh c = cm;
