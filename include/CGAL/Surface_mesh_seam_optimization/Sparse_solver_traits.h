@@ -186,6 +186,9 @@ public:
   typedef Eigen::SparseMatrix<double> Matrix;
   typedef Eigen::VectorXd Vector;
 
+  /// the default `threshold`
+  static constexpr Eigen::Index default_threshold = 40000;
+
   /// `threshold`: the number of unknowns from which CHOLMOD is used;
   /// `nested_dissection`: CHOLMOD orders the unknowns by nested dissection
   /// (METIS) instead of its default (AMD), for half the floating-point
@@ -193,7 +196,8 @@ public:
   /// analysis 4-5 times slower: worth it when a pattern serves many
   /// factorizations (`minimize_distortion()` sets it), not when it changes
   /// every few iterations (the seam loop).
-  explicit Default_sparse_solver_traits(Eigen::Index threshold = 40000, bool nested_dissection = false)
+  explicit Default_sparse_solver_traits(Eigen::Index threshold = default_threshold,
+                                        bool nested_dissection = false)
     : m_threshold(threshold), m_nested_dissection(nested_dissection) {}
 
   /// whether the last analysed pattern is factorized by CHOLMOD

@@ -157,7 +157,7 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   }
   // (one pattern per level: nested dissection pays)
   auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                 Default_sparse_solver_traits(40000, true));
+                                 Default_sparse_solver_traits(Default_sparse_solver_traits::default_threshold, true));
   const std::size_t max_iterations =
     internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
   internal::Newton_settings settings;
@@ -195,10 +195,10 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   // default, with ARAP_energy on 7 of 10 meshes of the benchmark; from
   // Mean_value_coordinates_parameterizer_3's on 3 of 5): from such a map it
   // descends from E_SD's minimum.
-  std::size_t squeezed = 0;
-  const bool distortion_first =
-    !internal::is_barrier_energy(energy) &&
-    (!use_input || (squeezed = internal::number_of_faces_below_area_floor(cm, settings.area_floor)) > 0);
+  const bool barrier = internal::is_barrier_energy(energy);
+  const std::size_t squeezed =
+    !barrier && use_input ? internal::number_of_faces_below_area_floor(cm, settings.area_floor) : 0;
+  const bool distortion_first = !barrier && (!use_input || squeezed > 0);
   if(squeezed > 0)
     result.message += std::string(result.message.empty() ? "" : "; ") + "E_SD minimized first: " +
                       std::to_string(squeezed) + " triangles of the initial map are squeezed below the area floor";

@@ -111,15 +111,21 @@ bool is_barrier_energy(const Energy& energy)
   return energy.value(J) > 1e4;
 }
 
-// Faces whose UV area is below the area floor of a descent with an energy
-// that is no barrier (Newton_settings::area_floor: `floor` times the face's
-// 3D area at the map's mean area ratio); such a descent cannot expand them.
+// The area floor of a descent with an energy that is no barrier
+// (Newton_settings::area_floor): a face's twice UV area may not fall below
+// this times its 3D area, `floor` times the map's mean area ratio.
+inline double area_floor_ratio2(const Cut_mesh& cm, double floor)
+{
+  double uv_area2 = 0;
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) uv_area2 += cm.signed_uv_area2(f);
+  return floor * uv_area2 / cm.total_area;
+}
+
+// Faces whose UV area is below that floor: such a descent cannot expand them.
 inline std::size_t number_of_faces_below_area_floor(const Cut_mesh& cm, double floor)
 {
   const std::size_t nf = cm.number_of_faces();
-  double uv_area2 = 0;
-  for(std::size_t f = 0; f < nf; ++f) uv_area2 += cm.signed_uv_area2(f);
-  const double ratio = floor * uv_area2 / cm.total_area;
+  const double ratio = area_floor_ratio2(cm, floor);
   std::size_t n = 0;
   for(std::size_t f = 0; f < nf; ++f)
     if(cm.signed_uv_area2(f) < ratio * cm.face_area[f]) ++n;

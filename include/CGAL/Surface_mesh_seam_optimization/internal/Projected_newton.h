@@ -323,9 +323,7 @@ private:
     const double* uv = m_x.data();
     if(m_floor2.size() != nf)
     {
-      double uv_area2 = 0;
-      for(std::size_t f = 0; f < nf; ++f) uv_area2 += m_cm.signed_uv_area2(f);
-      const double ratio = m_settings.area_floor * uv_area2 / m_cm.total_area;
+      const double ratio = area_floor_ratio2(m_cm, m_settings.area_floor);
       m_floor2.resize(nf);
       for(std::size_t f = 0; f < nf; ++f)
         m_floor2[f] = (std::min)(ratio * m_cm.face_area[f], 0.5 * m_cm.signed_uv_area2(f));
