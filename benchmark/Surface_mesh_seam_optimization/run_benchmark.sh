@@ -5,13 +5,15 @@
 # Markdown table with the paper's code's figures (reference_optcuts.csv) beside
 # ours.
 #
-# Usage: run_benchmark.sh [--quick | --profile | --scaling] [--no-bijectivity] [--timeout S]
+# Usage: run_benchmark.sh [--quick | --profile | --scaling] [--no-bijectivity] [--starts N] [--timeout S]
 #                         [--bound B] [--out PREFIX] [--data-dir DIR] [--build-dir DIR]
 #                         [--jobs N] [mesh ...]
 #   --quick        cat_f1500 bishop_part_f1000 pyramid_f3000 sphere_f1522 bimba_i_f10000
 #   --profile      the time of each run split by phase (assembly, factorization,
 #                  symbolic analysis, line search, topology queries, scaffold), on the
 #                  --quick meshes or those given; every report has this table too
+#   --starts N     number_of_starts(N) (default 2; 3 adds the start without the
+#                  scaffold first)
 #   --no-bijectivity  bijective(false): no scaffold, charts may overlap (the
 #                  reference's non-bijective figures are then the yardstick)
 #   (default)      every mesh of reference_optcuts.csv
@@ -58,6 +60,7 @@ out_prefix=
 data_dir=${SMSO_SHARED_DATA:-$repo/../shared/data}
 build_dir=$repo/build-bench
 jobs=2
+starts=2
 keep_dir=
 meshes=()
 while [ $# -gt 0 ]; do
@@ -66,6 +69,7 @@ while [ $# -gt 0 ]; do
     --scaling) mode=scaling ;;
     --profile) mode=profile ;;
     --no-bijectivity) bijective=0 ;;
+    --starts) starts=$2; shift ;;
     --time-limit) time_limit=$2; shift ;;
     --max-faces) max_faces=$2; shift ;;
     --converge-max-faces) converge_max_faces=$2; shift ;;
@@ -143,7 +147,7 @@ for m in "${meshes[@]}"; do
   name=$(basename "$file"); name=${name%.*}
   t0=$(date +%s.%N)
   bij_flag=(); [ "$bijective" = 1 ] || bij_flag=(--no-bijectivity)
-  line=$(timeout --kill-after=10 "$timeout_s" "$bin" --no-header --bound "$bound" "${bij_flag[@]}" --out-dir "$out_dir" "$file" 2>"$work/$name.err")
+  line=$(timeout --kill-after=10 "$timeout_s" "$bin" --no-header --bound "$bound" --starts "$starts" "${bij_flag[@]}" --out-dir "$out_dir" "$file" 2>"$work/$name.err")
   rc=$?
   t1=$(date +%s.%N)
   if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
@@ -162,9 +166,9 @@ done
 
 
 python3 - "$raw" "$work" "$reference" "$out_prefix" "$mode" "$bound" "$commit" "$dirty" "$(nproc)" "$cpu" \
-  "$start_date" "$load_before" "$timeout_s" "$bijective" <<'EOF'
+  "$start_date" "$load_before" "$timeout_s" "$bijective" "$starts" <<'EOF'
 import csv, json, os, statistics, sys
-raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load, timeout_s, bijective = sys.argv[1:]
+raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load, timeout_s, bijective, starts = sys.argv[1:]
 fields = ["mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
           "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds",
           "overlapping_pairs", "scaffold_rebuilds", "t_assembly", "t_factorization", "t_symbolic",
@@ -228,10 +232,10 @@ L.append(f"# optimize_seams benchmark ({mode})\n")
 L.append(f"- date: {date}; git commit: {commit}" + (f" (working tree had {dirty} uncommitted change(s) in include/ or the benchmark source)" if dirty != "0" else "") + "")
 L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start: {load}")
 if bijective == "1":
-    L.append(f"- settings: distortion bound {bound}, default settings (bijective: scaffold on), one process per mesh, time limit {timeout_s} s per mesh")
+    L.append(f"- settings: distortion bound {bound}, default settings (bijective: scaffold on)" + ("" if starts == "2" else f" but number_of_starts({starts})") + f", one process per mesh, time limit {timeout_s} s per mesh")
     L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv), its bijective run (ref bij = 1) where there is one, else its non-bijective one (ref bij = 0)")
 else:
-    L.append(f"- settings: distortion bound {bound}, bijective(false) (no scaffold: charts may overlap), one process per mesh, time limit {timeout_s} s per mesh")
+    L.append(f"- settings: distortion bound {bound}, bijective(false) (no scaffold: charts may overlap)" + ("" if starts == "2" else f", number_of_starts({starts})") + f", one process per mesh, time limit {timeout_s} s per mesh")
     L.append(f"- reference: the paper's code on this kind of machine (reference_optcuts.csv); the non-bijective row where there is one (ref bij = 0), else the bijective one (ref bij = 1)")
 L.append(f"- s: wall seconds of the optimize_seams() call; E_SD, E_se (normalized seam length), flips and overlapping pairs by uvmetrics.py on the written OBJ; E_SD lib / E_se lib: the library's own figures; MB: peak resident memory (ru_maxrss) of the process")
 L.append(f"- ratios: E_se / ref E_se (< 1: shorter seams), ref s / s (> 1: faster)")

@@ -24,7 +24,7 @@
 // --solver ldlt|cholmod: Eigen_simplicial_ldlt_traits or Cholmod_traits (when the
 // package is built with CHOLMOD) instead of the default Default_sparse_solver_traits.
 //
-// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--proxy-faces N] [--time-limit S]
+// Usage: seam_benchmark [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--starts N] [--proxy-faces N] [--time-limit S]
 //                       [--distortion-only] [--no-bijectivity] [--solver default|ldlt|cholmod] [--no-header] mesh.obj ...
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -82,6 +82,7 @@ struct Settings
   double bound = 4.1;
   std::size_t max_iterations = 100000;
   int recut_rounds = 6;
+  int starts = 2;
   std::size_t proxy_faces = SMSO::internal::default_proxy_number_of_faces;
   double time_limit = 0; // seconds; 0: none
   bool distortion_only = false;
@@ -146,6 +147,7 @@ static SMSO::Optimization_result optimize(const Surface_mesh& sm,
     if(settings.distortion_only)
       return SMSO::minimize_distortion(sm, uv, np);
     return SMSO::optimize_seams(sm, uv, SMSO_np::combine(np, SMSO_np::bijective(settings.bijective),
+                                                         SMSO_np::number_of_starts(settings.starts),
                                                          SMSO_np::visitor(std::ref(visitor))));
   };
   // The default solver is not passed: the two starts then get a solver each
@@ -237,13 +239,14 @@ static Row run(const std::string& file, const Settings& settings)
 static int usage(const char* argv0)
 {
   std::cerr << "usage: " << argv0
-            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--proxy-faces N] [--time-limit S] [--distortion-only]"
+            << " [--bound B] [--out-dir DIR] [--max-iterations N] [--recut-rounds N] [--starts N] [--proxy-faces N] [--time-limit S] [--distortion-only]"
                " [--solver S]"
                " [--no-bijectivity] [--no-header] mesh.obj ...\n"
                "  --bound B           distortion bound on E_SD (default 4.1)\n"
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
                "  --max-iterations N  cap on Newton iterations (default 100000)\n"
                "  --recut-rounds N    number_of_recut_rounds(N) (default 6; 0: none)\n"
+               "  --starts N          number_of_starts(N): 1, 2 (default) or 3\n"
                "  --proxy-faces N     proxy_number_of_faces(N): seams of meshes above 2N faces first on a proxy\n"
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"
@@ -266,6 +269,7 @@ int main(int argc, char** argv)
     else if(a == "--out-dir" && i + 1 < argc) settings.out_dir = argv[++i];
     else if(a == "--max-iterations" && i + 1 < argc) settings.max_iterations = std::strtoull(argv[++i], nullptr, 10);
     else if(a == "--recut-rounds" && i + 1 < argc) settings.recut_rounds = std::atoi(argv[++i]);
+    else if(a == "--starts" && i + 1 < argc) settings.starts = std::atoi(argv[++i]);
     else if(a == "--proxy-faces" && i + 1 < argc) settings.proxy_faces = std::size_t(std::atol(argv[++i]));
     else if(a == "--time-limit" && i + 1 < argc)
     {
