@@ -9,6 +9,7 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
@@ -17,6 +18,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_visibility.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Join_slits.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
@@ -1038,6 +1040,43 @@ BOOST_AUTO_TEST_CASE(a_third_start_cutting_without_the_scaffold_first_shortens_t
     if(!three.sm.is_border(h))
       same = same && three.uv[h] == again.uv[h] && three.seam[edge(h, three.sm)] == again.seam[edge(h, again.sm)];
   BOOST_TEST(same);
+}
+
+// A slit of two edges in the middle of a 6 x 6 grid joins the border along a
+// shortest path (2 edges from either end of the slit); nothing is left to join then.
+BOOST_AUTO_TEST_CASE(a_slit_joins_the_border_along_a_shortest_path)
+{
+  Surface_mesh sm;
+  CGAL::make_grid(6, 6, sm, [](std::size_t i, std::size_t j) { return K::Point_3(double(i), double(j), 0.); }, true);
+  Seam_map seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  auto at = [&](double x, double y) {
+    for(auto v : sm.vertices()) if(sm.point(v) == K::Point_3(x, y, 0.)) return v;
+    return Surface_mesh::null_vertex();
+  };
+  auto seam_between = [&](double x0, double y0, double x1, double y1) {
+    const auto e = CGAL::edge(at(x0, y0), at(x1, y1), sm);
+    BOOST_REQUIRE(e.second);
+    seam[e.first] = true;
+  };
+  seam_between(2, 3, 3, 3);
+  seam_between(3, 3, 4, 3);
+  auto seam_length = [&] {
+    double l = 0;
+    for(edge_descriptor e : sm.edges())
+      if(seam[e]) l += std::sqrt(CGAL::squared_distance(sm.point(sm.source(sm.halfedge(e))), sm.point(sm.target(sm.halfedge(e)))));
+    return l;
+  };
+  BOOST_TEST(SMSO::internal::join_slits_to_border(sm, get(CGAL::vertex_point, sm), seam) == 1u);
+  BOOST_TEST(std::abs(seam_length() - 4.) < 1e-12);
+  // the slit and the new path reach the border: one tree with it
+  std::size_t on_border = 0;
+  for(edge_descriptor e : sm.edges())
+    if(seam[e])
+      for(auto v : { sm.source(sm.halfedge(e)), sm.target(sm.halfedge(e)) })
+        on_border += sm.is_border(v) ? 1 : 0;
+  BOOST_TEST(on_border == 1u);
+  BOOST_TEST(SMSO::internal::join_slits_to_border(sm, get(CGAL::vertex_point, sm), seam) == 0u);
+  BOOST_TEST(std::abs(seam_length() - 4.) < 1e-12);
 }
 
 // A stop asked by the user's visitor (called by the first start only) stops

@@ -1,14 +1,7 @@
 # render.py OBJ(with per-corner uv) PNG [view: x|y|z|-x..] : 3D view, seams red
 import sys, zlib, struct, math
-V=[];F=[];FT=[];VT=[]
-for l in open(sys.argv[1]):
-    s=l.split()
-    if not s: continue
-    if s[0]=='v': V.append(tuple(map(float,s[1:4])))
-    elif s[0]=='vt': VT.append(tuple(map(float,s[1:3])))
-    elif s[0]=='f':
-        F.append([int(t.split('/')[0])-1 for t in s[1:]])
-        FT.append([int(t.split('/')[1])-1 if '/' in t and t.split('/')[1] else -1 for t in s[1:]])
+import os; sys.path.insert(0, os.path.dirname(os.path.abspath(__file__))); import objuv
+V, F, FT, VT = objuv.read(sys.argv[1])
 views=sys.argv[3].split(',') if len(sys.argv)>3 else ['z']
 # seams: edge whose two sides have different uv pairs
 E={}

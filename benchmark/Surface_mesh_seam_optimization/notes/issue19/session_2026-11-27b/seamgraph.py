@@ -1,13 +1,7 @@
 import sys, math
 from collections import defaultdict
-V=[];F=[];FT=[];VT=[]
-for l in open(sys.argv[1]):
-    s=l.split()
-    if not s: continue
-    if s[0]=='v': V.append(tuple(map(float,s[1:4])))
-    elif s[0]=='vt': VT.append(tuple(map(float,s[1:3])))
-    elif s[0]=='f':
-        F.append([int(t.split('/')[0])-1 for t in s[1:]]); FT.append([int(t.split('/')[1])-1 for t in s[1:]])
+import os; sys.path.insert(0, os.path.dirname(os.path.abspath(__file__))); import objuv
+V, F, FT, VT = objuv.read(sys.argv[1])
 E={}
 for fi,f in enumerate(F):
     for i in range(3):

@@ -1,13 +1,7 @@
 # tutte.py IN.obj OUT.obj : keep IN's seams (per-corner vt), replace UVs by a Tutte map (uniform weights, border on a circle by arc length)
 import sys, math
-V=[];F=[];FT=[];VT=[]
-for l in open(sys.argv[1]):
-    s=l.split()
-    if not s: continue
-    if s[0]=='v': V.append(tuple(map(float,s[1:4])))
-    elif s[0]=='vt': VT.append(tuple(map(float,s[1:3])))
-    elif s[0]=='f':
-        F.append([int(t.split('/')[0])-1 for t in s[1:]]); FT.append([int(t.split('/')[1])-1 for t in s[1:]])
+import os; sys.path.insert(0, os.path.dirname(os.path.abspath(__file__))); import objuv
+V, F, FT, VT = objuv.read(sys.argv[1])
 pos3={}
 for f,ft in zip(F,FT):
     for v,t in zip(f,ft): pos3[t]=v
@@ -83,6 +77,9 @@ while True:
     FT=NFT; VT=nVT
     print('connected a hole by a path of',len(path)-1,'edges; uv vertices',len(VT))
 n=len(VT)
+pos3={}
+for f,ft in zip(F,FT):
+    for v,t in zip(f,ft): pos3[t]=v
 cnt=defaultdict(int); nb=defaultdict(set)
 for ft in FT:
     for i in range(3):
