@@ -21,6 +21,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -118,12 +119,13 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // the scaffold first, then the scaffold run from the default initial map of
   // those seams. The relaxed problem's cuts are kept; a run with the scaffold
   // from the start takes its cuts while the charts' parts press on each other
-  // and buys many cheap ones instead (rgb_dragon_o_f8000: 28.6 against 22.1;
+  // and buys many cheap ones instead (rgb_dragon_o_f8000: 28.6 against 21.4;
   // notes/issue19). Both phases run one start, within the second start's
-  // iteration budget, on their own maps.
+  // iteration budget, on their own maps (made only for a third start).
+  auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
   typedef typename boost::property_traits<UVMap>::value_type Uv;
-  auto third_uv = get(CGAL::dynamic_halfedge_property_t<Uv>(), tm);
-  auto third_seam = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+  std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> third_uv_holder;
+  std::optional<decltype(get(CGAL::dynamic_edge_property_t<bool>(), tm))> third_seam_holder;
   Optimization_result third;
   Visitor third_visitor(nullptr, stop, &budget, false);
   bool has_third = false;
@@ -132,13 +134,24 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     const bool bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
     has_third = bound_mode && bijective && starts > 2 && first->status() == OK;
   }
+  if(has_third)
+  {
+    third_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
+    third_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
+  }
   auto run_third = [&] {
     if constexpr(!Nested)
     {
+      auto& third_uv = *third_uv_holder;
+      auto& third_seam = *third_seam_holder;
       const bool user_map = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
-      for(auto e : edges(tm)) put(third_seam, e, false);
-      if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-        for(auto e : edges(tm)) put(third_seam, e, get(get_parameter(np, internal_np::edge_is_seam_map), e));
+      for(auto e : edges(tm))
+      {
+        bool initial_seam = false;
+        if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+          initial_seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
+        put(third_seam, e, initial_seam);
+      }
       if(user_map)
         for(auto h : halfedges(tm))
           if(!is_border(h, tm)) put(third_uv, h, get(uvmap, h));
@@ -146,7 +159,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       internal::read_time_limit(np, limit);
       // (one parameter type for both phases: one instantiation)
       auto phase = [&](bool scaffold, bool initial_map) {
-        return optimize_seams_impl<TriangleMesh, decltype(third_uv), decltype(np.number_of_starts(1)
+        return optimize_seams_impl<TriangleMesh, std::decay_t<decltype(third_uv)>, decltype(np.number_of_starts(1)
                  .bijective(true).use_uv_map_as_initial(true).edge_is_seam_map(third_seam)
                  .visitor(std::ref(third_visitor)).time_limit(1.)), true>(
           tm, third_uv, np.number_of_starts(1).bijective(scaffold).use_uv_map_as_initial(initial_map)
@@ -154,9 +167,9 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
                           .time_limit((std::max)(limit - timer.time(), 1e-9)));
       };
       const Optimization_result relaxed = phase(false, user_map);
-      if(!relaxed.has_result() || !relaxed.bound_met || stop.load() || relaxed.status == WARNING_CANCELLED) return;
+      if(!feasible(relaxed) || stop.load() || relaxed.status == WARNING_CANCELLED) return;
       // its slits join the border first: under the scaffold a hole opens little
-      // (lucy_o_f8000: 9 slits, seams 13.05 -> 10.18; hand1 8.92 -> 7.35)
+      // (lucy_o_f8000: 9 slits, seams 13.05 -> 10.19)
       join_slits_to_border(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm)),
                            third_seam);
@@ -190,7 +203,6 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   if(second && !stop.load())
   {
     Optimization_result other = second->result();
-    auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
     if(feasible(other) && (!feasible(result) || Access::seam_cost(*second) < Access::seam_cost(*first)))
     {
       kept = second.get();
@@ -203,7 +215,6 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   bool third_kept = false;
   if(has_third && !stop.load())
   {
-    auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
     const double kept_cost = kept == first.get() ? Access::seam_cost(*first) : Access::seam_cost(*second);
     if(feasible(third) && (!feasible(result) || third.weighted_seam_length_normalized < kept_cost))
     {
@@ -223,9 +234,9 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   {
     // (packed already, if asked: the phase packs its own result)
     for(auto h : halfedges(tm))
-      if(!is_border(h, tm)) put(uvmap, h, get(third_uv, h));
+      if(!is_border(h, tm)) put(uvmap, h, get(*third_uv_holder, h));
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-      for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(third_seam, e));
+      for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(*third_seam_holder, e));
     result.seconds = timer.time();
     return result;
   }

@@ -2,12 +2,7 @@ import sys, math
 from collections import defaultdict
 import os; sys.path.insert(0, os.path.dirname(os.path.abspath(__file__))); import objuv
 V, F, FT, VT = objuv.read(sys.argv[1])
-E={}
-for fi,f in enumerate(F):
-    for i in range(3):
-        a,b=f[i],f[(i+1)%3]; ta,tb=FT[fi][i],FT[fi][(i+1)%3]
-        k=(min(a,b),max(a,b)); uv=(VT[ta],VT[tb]) if a<b else (VT[tb],VT[ta])
-        E.setdefault(k,[]).append(uv)
+E=objuv.edge_uvs(F,FT,VT)
 seam=[k for k,l in E.items() if len(l)==2 and l[0]!=l[1]]
 bdv=set(v for k,l in E.items() if len(l)==1 for v in k)
 adj=defaultdict(list)

@@ -2,15 +2,9 @@
 import sys, math
 import os; sys.path.insert(0, os.path.dirname(os.path.abspath(__file__))); import objuv
 V, F, FT, VT = objuv.read(sys.argv[1])
-pos3={}
-for f,ft in zip(F,FT):
-    for v,t in zip(f,ft): pos3[t]=v
-# uv-mesh edges
 from collections import defaultdict
-cnt=defaultdict(int); nb=defaultdict(set)
-for ft in FT:
-    for i in range(3):
-        a,b=ft[i],ft[(i+1)%3]; cnt[(a,b)]+=1; nb[a].add(b); nb[b].add(a)
+def uv_to_vertex(F, FT):
+    return {t: v for f, ft in zip(F, FT) for v, t in zip(f, ft)}
 def loops_of(FT):
     cnt=defaultdict(int)
     for ft in FT:
@@ -27,10 +21,7 @@ import heapq
 while True:
     lps=loops_of(FT)
     if len(lps)<=1: break
-    # positions of uv vertices in 3D
-    p3={}
-    for f,ft in zip(F,FT):
-        for v,t in zip(f,ft): p3[t]=v
+    p3=uv_to_vertex(F,FT)
     adj=defaultdict(set)
     for ft in FT:
         for i in range(3): a,b=ft[i],ft[(i+1)%3]; adj[a].add(b); adj[b].add(a)
@@ -77,23 +68,12 @@ while True:
     FT=NFT; VT=nVT
     print('connected a hole by a path of',len(path)-1,'edges; uv vertices',len(VT))
 n=len(VT)
-pos3={}
-for f,ft in zip(F,FT):
-    for v,t in zip(f,ft): pos3[t]=v
-cnt=defaultdict(int); nb=defaultdict(set)
+pos3=uv_to_vertex(F,FT)
+nb=defaultdict(set)
 for ft in FT:
     for i in range(3):
-        a,b=ft[i],ft[(i+1)%3]; cnt[(a,b)]+=1; nb[a].add(b); nb[b].add(a)
-bnext={}
-for (a,b) in cnt:
-    if (b,a) not in cnt: bnext[a]=b
-# loops
-loops=[];seen=set()
-for a in bnext:
-    if a in seen: continue
-    loop=[a]; seen.add(a); x=bnext[a]
-    while x!=a: loop.append(x); seen.add(x); x=bnext[x]
-    loops.append(loop)
+        a,b=ft[i],ft[(i+1)%3]; nb[a].add(b); nb[b].add(a)
+loops=loops_of(FT)
 print("loops",[len(l) for l in loops]); loops.sort(key=len, reverse=True)
 loop=loops[0]
 L=[math.dist(V[pos3[loop[i]]],V[pos3[loop[(i+1)%len(loop)]]]) for i in range(len(loop))]
