@@ -26,6 +26,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <set>
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
@@ -1008,7 +1009,7 @@ BOOST_AUTO_TEST_CASE(two_starts_are_deterministic)
 
 // hand1 (413 faces): with the scaffold from the start, the cutting phase
 // takes many cheap cuts once the fingers press on the palm (seams 10.08, the
-// reference's 7.52); the third start cuts without the scaffold first (6.40,
+// reference's 7.52); the third start cuts without the scaffold first (6.79,
 // overlapping) and goes on with it from those seams: 8.92, bijective. The
 // result is the same run after run and with one thread.
 BOOST_AUTO_TEST_CASE(a_third_start_cutting_without_the_scaffold_first_shortens_the_seams)
@@ -1039,6 +1040,57 @@ BOOST_AUTO_TEST_CASE(a_third_start_cutting_without_the_scaffold_first_shortens_t
   for(halfedge_descriptor h : three.sm.halfedges())
     if(!three.sm.is_border(h))
       same = same && three.uv[h] == again.uv[h] && three.seam[edge(h, three.sm)] == again.seam[edge(h, again.sm)];
+  BOOST_TEST(same);
+}
+
+// The third start takes over the first start's run where its lazy phase ends
+// (the charts first overlap) and goes on without the scaffold: that run is
+// the one without bijectivity (hand1: the same seams and iterations as
+// bijective(false)), and the first start goes on unchanged with its scaffold.
+BOOST_AUTO_TEST_CASE(the_free_run_forks_from_the_first_start_where_its_lazy_phase_ends)
+{
+  typedef SMSO::Seam_optimizer<Surface_mesh> Optimizer;
+  typedef SMSO::internal::Seam_optimizer_access Access;
+  Run free_run, bijective_run;
+  run("hand1.obj", free_run, SMSO_np::number_of_starts(1).bijective(false), SMSO_TEST_DATA_DIR);
+  run("hand1.obj", bijective_run, SMSO_np::number_of_starts(1), SMSO_TEST_DATA_DIR);
+  BOOST_REQUIRE(free_run.result.has_result());
+  BOOST_TEST(free_run.result.overlapping_triangle_pairs > 0u); // else the lazy phase would not end
+
+  Run r;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/hand1.obj", r.sm));
+  r.uv = r.sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  r.seam = r.sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  SMSO::Default_seam_optimization_visitor visitor, fork_visitor;
+  std::unique_ptr<Optimizer> first = Access::set_up<Optimizer>(r.sm, r.uv, visitor, SMSO_np::default_values());
+  std::unique_ptr<Optimizer> forked;
+  std::size_t calls = 0, at = 0;
+  Access::set_lazy_phase_end_hook(*first, [&] {
+    ++calls;
+    at = Access::iterations(*first);
+    forked = Access::fork_free(*first, fork_visitor, SMSO::Default_sparse_solver_traits());
+  });
+  Access::begin(*first);
+  const SMSO::Optimization_result first_result = first->run();
+  BOOST_TEST(calls == 1u);
+  BOOST_REQUIRE(forked);
+  BOOST_TEST(at > 0u);
+  BOOST_TEST(at < first_result.iterations);
+  // the first start as without the hook
+  BOOST_TEST(first_result.seam_length == bijective_run.result.seam_length);
+  BOOST_TEST(first_result.iterations == bijective_run.result.iterations);
+
+  Access::resume(*forked);
+  const SMSO::Optimization_result f = forked->run();
+  BOOST_TEST(f.status == SMSO::OK);
+  BOOST_TEST(f.seam_length == free_run.result.seam_length);
+  BOOST_TEST(f.distortion == free_run.result.distortion);
+  BOOST_TEST(f.iterations == free_run.result.iterations);
+  forked->write_uv_map(r.uv);
+  forked->write_seam_map(r.seam);
+  bool same = true;
+  for(halfedge_descriptor h : r.sm.halfedges())
+    if(!r.sm.is_border(h)) same = same && r.seam[edge(h, r.sm)] == free_run.seam[edge(h, free_run.sm)];
   BOOST_TEST(same);
 }
 

@@ -13,6 +13,7 @@
 #include <CGAL/Real_timer.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -74,6 +75,47 @@ struct Seam_optimizer_access
 
   template <typename Optimizer>
   static void begin(Optimizer& o) { o.begin(); }
+
+  // `f` is called on the run's thread where its lazy phase (bijective, no
+  // scaffold yet) ends; set before begin().
+  template <typename Optimizer>
+  static void set_lazy_phase_end_hook(Optimizer& o, std::function<void()> f) { o.m_lazy_phase_end_hook = std::move(f); }
+
+  // A run without bijectivity that takes over `o` where it stands (called
+  // from the lazy phase end hook of `o`): a copy of its charts and of its
+  // loop. Its own visitor and solver; resume() before its first step.
+  template <typename Optimizer, typename Visitor, typename SolverTraits>
+  static std::unique_ptr<Optimizer> fork_free(const Optimizer& o, Visitor& visitor, const SolverTraits& solver)
+  {
+    std::unique_ptr<Optimizer> c(new Optimizer(Not_set_up(), o.m_tm, visitor));
+    c->m_timer.start();
+    c->m_energy = o.m_energy;
+    c->m_solver.emplace(solver);
+    c->m_status = o.m_status;
+    c->m_message = o.m_message;
+    c->m_cm = o.m_cm;
+    c->m_copy = o.m_copy;
+    c->m_weight = o.m_weight;
+    c->m_settings = o.m_settings;
+    c->m_settings.bijective = false;
+    c->m_initial_distortion = o.m_initial_distortion;
+    c->m_core.reset(new typename Optimizer::Core(c->m_cm, c->m_energy, *c->m_solver, c->m_weight, c->m_settings,
+                                                 *c->m_visitor));
+    c->m_core->resume(*o.m_core);
+    return c;
+  }
+
+  template <typename Optimizer>
+  static std::size_t iterations(const Optimizer& o) { return o.m_core ? o.m_core->iterations() : 0; }
+
+  // The pattern of a forked run analysed (not in the hook: a solver the
+  // user gave is shared, and the first run goes on with it).
+  template <typename Optimizer>
+  static void resume(Optimizer& o)
+  {
+    o.m_running = o.m_core->resume_pattern();
+    if(!o.m_running) o.end(ERROR_LINEAR_SOLVER);
+  }
 };
 
 } // namespace internal
@@ -152,6 +194,7 @@ private:
   {
     if(m_status != OK) return;
     m_core.reset(new Core(m_cm, m_energy, *m_solver, m_weight, m_settings, *m_visitor));
+    if(m_lazy_phase_end_hook) m_core->set_lazy_phase_end_hook(m_lazy_phase_end_hook);
     m_status = m_core->start();
     m_running = (m_status == OK);
     // (the first descent already hit the iteration cap or the time limit)
@@ -249,6 +292,7 @@ private:
   std::optional<Visitor> m_own_visitor; // (none when the user gave one)
   Visitor* m_visitor;
   std::unique_ptr<Core> m_core;
+  std::function<void()> m_lazy_phase_end_hook;
   Error_code m_status = OK;
   std::string m_message;
   bool m_running = false;

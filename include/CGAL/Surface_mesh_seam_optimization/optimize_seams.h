@@ -108,27 +108,24 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     second = Access::copy_setup(*first, second_visitor,
                                 choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver()),
                                 internal::HOLD_PRICE_WHILE_PAYING);
-  auto run_first = [&] {
-    struct Done { internal::Iteration_budget& b; ~Done() { b.first_done(); } } done{budget}; // (even on an exception)
-    Access::begin(*first);
-    first->run();
-  };
-  auto run_second = [&] { Access::begin(*second); second->run(); };
-
   // Bound mode with the scaffold, a third start: the seams optimized without
   // the scaffold first, then the scaffold run from the default initial map of
   // those seams. The relaxed problem's cuts are kept; a run with the scaffold
   // from the start takes its cuts while the charts' parts press on each other
   // and buys many cheap ones instead (rgb_dragon_o_f8000: 28.6 against 21.4;
-  // notes/issue19). Both phases run one start, within the second start's
-  // iteration budget, on their own maps (made only for a third start).
+  // notes/issue19). The run without the scaffold is the first start's up to
+  // the end of its lazy phase (no overlap yet): it forks from there (or is
+  // the first start's, if that phase never ends). Both phases run within the
+  // second start's iteration budget, on their own maps (made only for a
+  // third start).
   auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
   typedef typename boost::property_traits<UVMap>::value_type Uv;
   std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> third_uv_holder;
   std::optional<decltype(get(CGAL::dynamic_edge_property_t<bool>(), tm))> third_seam_holder;
   Optimization_result third;
   Visitor third_visitor(nullptr, stop, &budget, false);
-  bool has_third = false;
+  internal::Handoff<Optimizer> free_run;
+  bool has_third = false, third_time_limited = false;
   if constexpr(!Nested)
   {
     const bool bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
@@ -138,42 +135,60 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   {
     third_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
     third_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
+    Access::set_lazy_phase_end_hook(*first, [&] {
+      free_run.give(Access::fork_free(*first, third_visitor,
+                                      choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
+                                                       Solver())));
+    });
   }
+  auto run_first = [&] {
+    // (even on an exception)
+    struct Done
+    {
+      internal::Iteration_budget& b;
+      internal::Handoff<Optimizer>& h;
+      ~Done() { b.first_done(); h.settle(); }
+    } done{budget, free_run};
+    Access::begin(*first);
+    first->run();
+  };
+  auto run_second = [&] { Access::begin(*second); second->run(); };
   auto run_third = [&] {
     if constexpr(!Nested)
     {
       auto& third_uv = *third_uv_holder;
       auto& third_seam = *third_seam_holder;
-      const bool user_map = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
-      for(auto e : edges(tm))
+      std::unique_ptr<Optimizer> forked = free_run.take();
+      if(stop.load()) return;
+      Optimization_result relaxed;
+      if(forked)
       {
-        bool initial_seam = false;
-        if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-          initial_seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
-        put(third_seam, e, initial_seam);
+        third_visitor.add_iterations(Access::iterations(*forked));
+        Access::resume(*forked);
+        relaxed = forked->run();
+        if(feasible(relaxed)) forked->write_seam_map(third_seam);
       }
-      if(user_map)
-        for(auto h : halfedges(tm))
-          if(!is_border(h, tm)) put(third_uv, h, get(uvmap, h));
-      double limit = std::numeric_limits<double>::infinity();
-      internal::read_time_limit(np, limit);
-      // (one parameter type for both phases: one instantiation)
-      auto phase = [&](bool scaffold, bool initial_map) {
-        return optimize_seams_impl<TriangleMesh, std::decay_t<decltype(third_uv)>, decltype(np.number_of_starts(1)
-                 .bijective(true).use_uv_map_as_initial(true).edge_is_seam_map(third_seam)
-                 .visitor(std::ref(third_visitor)).time_limit(1.)), true>(
-          tm, third_uv, np.number_of_starts(1).bijective(scaffold).use_uv_map_as_initial(initial_map)
-                          .edge_is_seam_map(third_seam).visitor(std::ref(third_visitor))
-                          .time_limit((std::max)(limit - timer.time(), 1e-9)));
-      };
-      const Optimization_result relaxed = phase(false, user_map);
+      else
+      {
+        relaxed = first->result();
+        third_visitor.add_iterations(relaxed.iterations);
+        if(feasible(relaxed)) first->write_seam_map(third_seam);
+      }
+      third_time_limited = relaxed.status == WARNING_TIME_LIMIT;
       if(!feasible(relaxed) || stop.load() || relaxed.status == WARNING_CANCELLED) return;
       // its slits join the border first: under the scaffold a hole opens little
       // (lucy_o_f8000: 9 slits, seams 13.05 -> 10.19)
       join_slits_to_border(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_const_property_map(CGAL::vertex_point, tm)),
                            third_seam);
-      third = phase(true, false);
+      double limit = std::numeric_limits<double>::infinity();
+      internal::read_time_limit(np, limit);
+      const auto scaffold_np = np.number_of_starts(1).bijective(true).use_uv_map_as_initial(false)
+                                 .edge_is_seam_map(third_seam).visitor(std::ref(third_visitor))
+                                 .time_limit((std::max)(limit - timer.time(), 1e-9));
+      third = optimize_seams_impl<TriangleMesh, std::decay_t<decltype(third_uv)>, std::decay_t<decltype(scaffold_np)>,
+                                  true>(tm, third_uv, scaffold_np);
+      third_time_limited = third.status == WARNING_TIME_LIMIT;
       third.iterations += relaxed.iterations;
       third.topology_operations += relaxed.topology_operations;
       third.scaffold_rebuilds += relaxed.scaffold_rebuilds;
@@ -224,10 +239,10 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       third_kept = true;
     }
   }
-  // the time limit that cut either start short cut the call short: the kept
+  // the time limit that cut any start short cut the call short: the kept
   // result is the best so far, not the one an unlimited call would give
-  if(second && result.status == OK &&
-     (first->status() == WARNING_TIME_LIMIT || second->status() == WARNING_TIME_LIMIT))
+  if(result.status == OK && (first->status() == WARNING_TIME_LIMIT ||
+                             (second && second->status() == WARNING_TIME_LIMIT) || third_time_limited))
     result.status = WARNING_TIME_LIMIT;
   if(!has_result(result.status)) return result;
   if(third_kept)

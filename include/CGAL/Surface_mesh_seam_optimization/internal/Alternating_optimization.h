@@ -51,6 +51,8 @@ public:
   // Keeps the best feasible configuration (bound mode).
   Error_code finish(Error_code status)
   {
+    // (a lazy phase that lasted to here: the run's result stands for the free one)
+    this->drop_lazy_phase_end_hook();
     // whatever stopped a run without its scaffold, what it leaves does not overlap
     m_guard.restore_if_overlapping(m_cm);
     if(status == OK || status == WARNING_CANCELLED || status == WARNING_MAXIMUM_ITERATIONS ||

@@ -31,6 +31,7 @@
 #endif
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -111,6 +112,34 @@ public:
   }
 
   std::size_t scaffold_rebuilds() const { return m_scaffold_rebuilds; }
+
+  // Called (once, on the thread of this run) at the stationary point where
+  // the lazy phase ends, before the scaffold changes anything: the state then
+  // is that of a run without bijectivity. Dropped once the alternation ends.
+  void set_lazy_phase_end_hook(std::function<void()> f) { m_on_lazy_phase_end = std::move(f); }
+  void drop_lazy_phase_end_hook() { m_on_lazy_phase_end = nullptr; }
+
+  // Takes over the loop of `o` (another run on a copy of its cut mesh, at a
+  // stationary point): lambda, the best record, the configurations seen and
+  // the counts, Newton's iterations and the deadline included.
+  // resume_pattern() before the first step.
+  void resume(const Alternation& o)
+  {
+    m_lambda = o.m_lambda;
+    m_operations = o.m_operations;
+    m_tips = o.m_tips;
+    m_seen = o.m_seen;
+    m_stationary_points = o.m_stationary_points;
+    m_best_at = o.m_best_at;
+    m_has_best = o.m_has_best;
+    m_best_polished = o.m_best_polished;
+    m_best_se = o.m_best_se;
+    m_best_lambda = o.m_best_lambda;
+    m_best = o.m_best;
+    m_deadline = o.m_deadline;
+    m_newton.continue_count(o.m_newton.iterations());
+  }
+  bool resume_pattern() { return m_newton.rebuild_pattern(); }
 
   Optimization_timings timings() const
   {
@@ -194,14 +223,21 @@ protected:
   // Bijectivity_guard). False (status set) if the run must end.
   bool check_overlaps(Error_code& status)
   {
-    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda, [this] { return chart_distortion(); });
+    auto e_sd = [this] { return chart_distortion(); };
+    auto fork = [this] {
+      if(!m_on_lazy_phase_end) return;
+      std::function<void()> f;
+      f.swap(m_on_lazy_phase_end);
+      f();
+    };
+    Bijectivity_guard::Verdict verdict = m_guard.check(m_cm, m_lambda, e_sd, fork);
     while(verdict == Bijectivity_guard::SPLIT)
     {
       m_tips.clear();
       if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
       status = descend();
       if(status != OK) return false;
-      verdict = m_guard.check(m_cm, m_lambda, [this] { return chart_distortion(); });
+      verdict = m_guard.check(m_cm, m_lambda, e_sd, fork);
     }
     if(verdict == Bijectivity_guard::NO_OVERLAP) return true;
     if(verdict == Bijectivity_guard::RESTARTED)
@@ -470,6 +506,7 @@ protected:
   std::size_t m_scaffold_rebuilds = 0, m_rejected = 0;
   bool m_rebuilt_at_convergence = false;
   std::vector<int> m_tips;
+  std::function<void()> m_on_lazy_phase_end;
   std::set<std::pair<long long, long long> > m_seen;
   std::size_t m_stationary_points = 0, m_best_at = 0;
   bool m_defer_pattern = false; // a batch of operations: the Newton pattern is analysed after it

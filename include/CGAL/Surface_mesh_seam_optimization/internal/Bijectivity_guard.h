@@ -88,8 +88,10 @@ public:
   // the charts' E_SD (asked only when a split is considered). On RESTORED,
   // `lambda` becomes the safe configuration's. The caller then builds the
   // scaffold (see scaffold_failed()).
-  template <typename Distortion>
-  Verdict check(Cut_mesh& cm, double& lambda, const Distortion& e_sd)
+  // `before_scaffold()` is called once the lazy phase is found over, before
+  // anything is changed for it (the third start of optimize_seams() forks there).
+  template <typename Distortion, typename Before>
+  Verdict check(Cut_mesh& cm, double& lambda, const Distortion& e_sd, const Before& before_scaffold)
   {
     if(!m_lazy) return NO_OVERLAP;
     if(count_overlapping_pairs(cm, 1) == 0) { keep_as_safe(cm, lambda); return NO_OVERLAP; }
@@ -99,6 +101,7 @@ public:
       keep_as_safe(cm, lambda);
       return NO_OVERLAP;
     }
+    before_scaffold();
     // Back to an initial map (no stationary point was free of overlaps yet)
     // that is orders of magnitude from stationary (Tutte maps of cut-open
     // high-genus charts: E_SD 1e6, triangles squeezed 100-fold and more),

@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Two starts of optimize_seams() run side by side: the visitor each one
-// calls, and running them (in parallel where TBB is linked).
+// Starts of optimize_seams() run side by side: the visitor each one calls,
+// what one hands to another, and running them (in parallel where TBB is
+// linked).
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PARALLEL_STARTS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_PARALLEL_STARTS_H
@@ -17,6 +18,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <memory>
 #include <mutex>
 
 namespace CGAL {
@@ -62,6 +64,33 @@ private:
   bool m_done = false;
 };
 
+// What one start hands to another once (a forked run, or nothing): take()
+// waits until it is settled, so that the taker's result does not depend on
+// the schedule.
+template <typename T>
+class Handoff
+{
+public:
+  void give(std::unique_ptr<T> t)
+  {
+    { std::lock_guard<std::mutex> lock(m_mutex); if(!m_settled) m_item = std::move(t); m_settled = true; }
+    m_changed.notify_all();
+  }
+  void settle() { give(nullptr); }
+  std::unique_ptr<T> take()
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_changed.wait(lock, [&] { return m_settled; });
+    return std::move(m_item);
+  }
+
+private:
+  std::mutex m_mutex;
+  std::condition_variable m_changed;
+  std::unique_ptr<T> m_item;
+  bool m_settled = false;
+};
+
 // The visitor of one start: the user's visitor for the start run on the
 // calling thread (so that it is never called from another thread), none for
 // the others. A stop asked by the user's visitor stops every start. With a
@@ -83,6 +112,9 @@ public:
     }
     return go(!m_user || m_user->on_iteration(p));
   }
+  // (a start that takes over another's run counts its iterations too)
+  void add_iterations(std::size_t n) { m_iterations += n; }
+
   bool on_topology_operation(const Seam_optimization_progress& p)
   {
     return go(!m_user || m_user->on_topology_operation(p));

@@ -181,6 +181,8 @@ public:
   double last_decrease() const { return m_last_decrease; }
   double gradient_norm2() const { return m_gradient_norm2; }
   std::size_t iterations() const { return m_iterations; }
+  // (a run taking over another's counts on from its iterations)
+  void continue_count(std::size_t iterations) { m_iterations = iterations; }
   // iterations whose step needed a new factorization (the others reused the last one)
   std::size_t factorizations() const { return m_factorizations; }
   // iterations whose step came from the exact Hessian's model (see Newton_settings::exact_curvature_iterations)
