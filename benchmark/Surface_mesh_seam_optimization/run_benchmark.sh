@@ -172,7 +172,7 @@ raw, work, reference, prefix, mode, bound, commit, dirty, nproc, cpu, date, load
 fields = ["mesh", "faces", "seconds", "iterations", "topology_operations", "e_sd", "seam_length_normalized",
           "charts", "flipped_triangles", "peak_mb", "status", "bound_met", "lambda", "initial_map_seconds",
           "overlapping_pairs", "scaffold_rebuilds", "t_assembly", "t_factorization", "t_symbolic",
-          "t_line_search", "t_topology", "t_scaffold"]
+          "t_line_search", "t_topology", "t_scaffold", "start"]
 rows = [dict(zip(fields, l)) for l in csv.reader(open(raw)) if l]
 
 ref = {}  # mesh -> {bijective flag -> row}

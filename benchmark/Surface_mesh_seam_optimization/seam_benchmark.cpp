@@ -4,8 +4,9 @@
 //   mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,
 //   charts,flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds,
 //   overlapping_pairs,scaffold_rebuilds,t_assembly,t_factorization,t_symbolic,
-//   t_line_search,t_topology,t_scaffold
-// (t_*: Optimization_result::timings, seconds by phase).
+//   t_line_search,t_topology,t_scaffold,start
+// (t_*: Optimization_result::timings, seconds by phase; start: the start whose
+// result was kept, Optimization_result::start).
 // seconds: wall time of the optimize_seams() call (reading and writing excluded).
 // peak_mb: getrusage(RUSAGE_SELF).ru_maxrss of the whole process so far, so run
 // one mesh per process to get a per-mesh figure (run_benchmark.sh does).
@@ -100,6 +101,7 @@ struct Row
   double e_sd = 0, seam = 0, lambda = 0;
   bool bound_met = false, has_result = false, timed_only = false;
   std::size_t overlaps = 0, scaffold_rebuilds = 0;
+  int start = -1; // Optimization_result::start (-1: no result)
   SMSO::Optimization_timings timings;
   std::string status = "ERROR_UNKNOWN";
 };
@@ -127,8 +129,10 @@ static void print(const Row& r)
               int(r.bound_met), r.lambda);
   if(r.initial_map_seconds >= 0) std::printf("%.3f", r.initial_map_seconds);
   const SMSO::Optimization_timings& t = r.timings;
-  std::printf(",%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", r.overlaps, r.scaffold_rebuilds, t.assembly, t.factorization,
+  std::printf(",%zu,%zu,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,", r.overlaps, r.scaffold_rebuilds, t.assembly, t.factorization,
               t.symbolic_analysis, t.line_search, t.topology, t.scaffold);
+  if(r.start >= 0) std::printf("%d", r.start);
+  std::printf("\n");
   std::fflush(stdout);
 }
 
@@ -221,6 +225,7 @@ static Row run(const std::string& file, const Settings& settings)
   row.bound_met = r.bound_met;
   row.overlaps = r.overlapping_triangle_pairs;
   row.scaffold_rebuilds = r.scaffold_rebuilds;
+  row.start = int(r.start);
   row.timings = r.timings;
   const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv);
   row.flips = m.flipped_triangles;
@@ -301,7 +306,7 @@ int main(int argc, char** argv)
   if(header)
     std::printf("mesh,faces,seconds,iterations,topology_operations,e_sd,seam_length_normalized,charts,"
                 "flipped_triangles,peak_mb,status,bound_met,lambda,initial_map_seconds,overlapping_pairs,scaffold_rebuilds,"
-                "t_assembly,t_factorization,t_symbolic,t_line_search,t_topology,t_scaffold\n");
+                "t_assembly,t_factorization,t_symbolic,t_line_search,t_topology,t_scaffold,start\n");
   for(const std::string& file : files)
   {
     Row row;
