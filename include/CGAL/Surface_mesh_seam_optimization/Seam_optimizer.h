@@ -87,18 +87,9 @@ struct Seam_optimizer_access
   template <typename Optimizer, typename Visitor, typename SolverTraits>
   static std::unique_ptr<Optimizer> fork_free(const Optimizer& o, Visitor& visitor, const SolverTraits& solver)
   {
-    std::unique_ptr<Optimizer> c(new Optimizer(Not_set_up(), o.m_tm, visitor));
-    c->m_timer.start();
-    c->m_energy = o.m_energy;
-    c->m_solver.emplace(solver);
-    c->m_status = o.m_status;
-    c->m_message = o.m_message;
-    c->m_cm = o.m_cm;
-    c->m_copy = o.m_copy;
-    c->m_weight = o.m_weight;
-    c->m_settings = o.m_settings;
+    // (its charts as they stand: copy_setup() copies the current cut mesh)
+    std::unique_ptr<Optimizer> c = copy_setup(o, visitor, solver, o.m_settings.dual_step_rule);
     c->m_settings.bijective = false;
-    c->m_initial_distortion = o.m_initial_distortion;
     c->m_core.reset(new typename Optimizer::Core(c->m_cm, c->m_energy, *c->m_solver, c->m_weight, c->m_settings,
                                                  *c->m_visitor));
     c->m_core->resume(*o.m_core);

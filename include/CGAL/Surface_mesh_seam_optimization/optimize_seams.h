@@ -188,7 +188,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
                                  .time_limit((std::max)(limit - timer.time(), 1e-9));
       third = optimize_seams_impl<TriangleMesh, std::decay_t<decltype(third_uv)>, std::decay_t<decltype(scaffold_np)>,
                                   true>(tm, third_uv, scaffold_np);
-      third_time_limited = third.status == WARNING_TIME_LIMIT;
+      third_time_limited = third_time_limited || third.status == WARNING_TIME_LIMIT;
       third.iterations += relaxed.iterations;
       third.topology_operations += relaxed.topology_operations;
       third.scaffold_rebuilds += relaxed.scaffold_rebuilds;
