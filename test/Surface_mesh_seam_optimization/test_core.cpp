@@ -37,6 +37,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <thread>
 
@@ -1221,6 +1222,95 @@ BOOST_AUTO_TEST_CASE(reroute_seam_straightens_a_seam_between_two_junctions)
   // what the caller restores when it rejects the result (an overlap)
   before.restore(cm);
   BOOST_TEST(std::abs(cm.seam_length() - (9 + 2 * std::sqrt(2.))) < 1e-12);
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+}
+
+
+// A seam tree: tips at (4,4) and (6,2) join at (6,4), from where the seam
+// climbs to the right border on diagonals to (9,7). Its end on the boundary
+// is free: from (7,5), the cheapest way to the border is (9,5), 2 against
+// 2 sqrt(2). The four faces between the two ends change sides.
+BOOST_AUTO_TEST_CASE(reroute_seam_slides_a_seam_end_along_the_boundary)
+{
+  Grid_cut grid;
+  SMSO::internal::Cut_mesh& cm = grid.cm;
+  auto id = [&](int i, int j) { return grid.id(i, j); };
+  // (a tree: cut_along() takes one path)
+  {
+    std::vector<char> seam(cm.corner_vertex.size(), 0);
+    const std::vector<std::pair<int, int> > edges = { { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) },
+      { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) }, { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) },
+      { id(6, 3), id(6, 4) } };
+    for(std::size_t h = 0; h < seam.size(); ++h)
+      for(const auto& e : edges)
+      {
+        const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
+        if((s == e.first && t == e.second) || (s == e.second && t == e.first)) seam[h] = 1;
+      }
+    SMSO::internal::label_uv_vertices(cm, seam);
+  }
+  std::vector<int> chart;
+  BOOST_REQUIRE(cm.compute_charts(chart) == 1u);
+  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+  {
+    const double* p = &cm.points[3 * cm.corner_vertex[c]];
+    cm.uv[2 * cm.corner_uv[c]] = p[0];
+    cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
+  }
+  const auto length = [&](int h) { return cm.edge_length(h); };
+  const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
+  const auto target = [&](int h) { return cm.corner_vertex[h]; };
+
+  const auto reroutes = SMSO::internal::seam_reroutes(cm, length, 1.1);
+  BOOST_REQUIRE(reroutes.size() == 1u);
+  const auto& d = reroutes.front();
+  BOOST_TEST(d.reroute);
+  BOOST_TEST(d.to_border);
+  BOOST_TEST(std::abs(d.seam_cost - 2 * std::sqrt(2.)) < 1e-12);
+  BOOST_TEST(std::abs(d.shortcut_cost - 2) < 1e-12);
+  BOOST_TEST(source(d.seam.front()) == id(7, 5));
+  BOOST_TEST(target(d.seam.back()) == id(9, 7));
+  BOOST_TEST(source(d.shortcut.front()) == id(7, 5));
+  BOOST_TEST(target(d.shortcut.back()) == id(9, 5));
+  for(int h : d.shortcut) BOOST_TEST(!cm.is_seam(h));
+  // 2 sqrt(2) / 2 = 1.41: not at the ratio 1.5
+  BOOST_TEST(SMSO::internal::seam_reroutes(cm, length, 1.5).empty());
+
+  SMSO::internal::Uv_snapshot before;
+  BOOST_REQUIRE(SMSO::internal::reroute_seam(cm, SMSO::internal::Vertex_corners(cm), d, before));
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+  BOOST_TEST(std::abs(cm.seam_length() - (4 + std::sqrt(2.) + 2)) < 1e-12);
+  const std::set<std::pair<int, int> > expected = { { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) },
+    { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 5) }, { id(8, 5), id(9, 5) }, { id(6, 2), id(6, 3) },
+    { id(6, 3), id(6, 4) } };
+  for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+  {
+    if(cm.opposite[h] < 0) continue;
+    const int a = source(int(h)), b = target(int(h));
+    BOOST_TEST(cm.is_seam(int(h)) == (expected.count({ a, b }) + expected.count({ b, a }) > 0));
+  }
+  // one UV vertex at (9,7), on no seam now; two at (9,5), where the seam ends
+  auto copies = [&](int v) {
+    std::set<int> uvs;
+    for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+      if(cm.corner_vertex[c] == v) uvs.insert(cm.corner_uv[c]);
+    return uvs.size();
+  };
+  BOOST_TEST(copies(id(9, 7)) == 1u);
+  BOOST_TEST(copies(id(9, 5)) == 2u);
+  BOOST_TEST(cm.compute_charts(chart) == 1u);
+  // the map (isometric, both sides of every seam in place) did not move
+  double worst = 0;
+  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+  {
+    const double* p = &cm.points[3 * cm.corner_vertex[c]];
+    worst = (std::max)(worst, std::abs(cm.uv[2 * cm.corner_uv[c]] - p[0]));
+    worst = (std::max)(worst, std::abs(cm.uv[2 * cm.corner_uv[c] + 1] - p[1]));
+  }
+  BOOST_TEST(worst < 1e-9);
+  for(const auto& r : SMSO::internal::seam_reroutes(cm, length, 1.01)) BOOST_TEST(!r.to_border);
+  before.restore(cm);
+  BOOST_TEST(std::abs(cm.seam_length() - (4 + 3 * std::sqrt(2.))) < 1e-12);
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
 }
 

@@ -31,6 +31,7 @@ struct Seam_detour
   std::vector<int> seam, shortcut;
   double seam_cost = 0, shortcut_cost = 0;
   bool reroute = false; // no tip: both paths from the part's first vertex to its last
+  bool to_border = false; // a reroute whose part and shortcut end on the input boundary, at two vertices
 };
 
 // The interior edges around each vertex and how many of them are seams.
@@ -169,12 +170,69 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
   return detours;
 }
 
+// Where a seam path from a junction or a tip ends on the input boundary (and
+// nothing else does there), that end is free to move along the boundary: the part from one of the
+// path's inner vertices to it, against the cheapest path from that vertex to
+// another boundary vertex on no seam, if at least `min_ratio` times cheaper
+// (the best saving).
+template <typename Cost>
+void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, const std::vector<int>& path,
+                   Uncut_paths& paths, std::vector<Seam_detour>& out)
+{
+  for(int direction = 0; direction < 2; ++direction)
+  {
+    std::vector<int> p(path);
+    if(direction == 1)
+    {
+      std::reverse(p.begin(), p.end());
+      for(int& h : p) h = g.cm.opposite[h];
+    }
+    const int end = g.target(p.back());
+    // (a path from boundary to boundary divides charts: its ends stay)
+    if(!g.on_border[end] || g.on_border[g.source(p.front())] || g.seam_degree[end] != 1 || p.size() < 2) continue;
+    std::vector<double> length(p.size() + 1, 0.);
+    for(std::size_t i = 0; i < p.size(); ++i) length[i + 1] = length[i] + cost(p[i]);
+    double saving = 0;
+    std::size_t best_i = 0;
+    std::vector<int> best_shortcut;
+    for(std::size_t i = 1; i < p.size(); ++i)
+    {
+      const int start = g.target(p[i - 1]);
+      const double along = length[p.size()] - length[i];
+      paths.run(g, cost, start, along);
+      for(int w : paths.touched)
+      {
+        const double dw = paths.dist[w];
+        if(w == end || !g.on_border[w] || g.seam_degree[w] != 0 || !(dw * min_ratio <= along) || !(along - dw > saving))
+          continue;
+        saving = along - dw;
+        best_i = i;
+        best_shortcut.clear();
+        for(int x = w; x != start; x = g.source(paths.reached_by[x])) best_shortcut.push_back(paths.reached_by[x]);
+        std::reverse(best_shortcut.begin(), best_shortcut.end());
+      }
+    }
+    if(saving > 0)
+    {
+      Seam_detour d;
+      d.seam.assign(p.begin() + best_i, p.end());
+      d.seam_cost = length[p.size()] - length[best_i];
+      d.shortcut = best_shortcut;
+      d.shortcut_cost = d.seam_cost - saving;
+      d.reroute = true;
+      d.to_border = true;
+      out.push_back(std::move(d));
+    }
+  }
+}
+
 // For each seam path between two junctions (or input boundary vertices),
 // the part between two of its inner vertices whose cheapest alternative
 // (through vertices on no seam and not on the input boundary) saves most, if
 // that is at least `min_ratio` times cheaper. Such a part has no tip to be
 // zipped from: `seam` and `shortcut` both go from its first vertex to its
-// last.
+// last. And, where such a path ends on the input boundary, its border
+// slides (border_slides()).
 template <typename Cost>
 std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, double min_ratio)
 {
@@ -200,8 +258,10 @@ std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, dou
       walked[next] = walked[cm.opposite[next]] = 1;
     }
     const int end = g.target(path.back());
-    if(plain(end) || tip(end) || tip(g.source(h0)) || path.size() < 3)
-      continue; // a leaf path (seam_detours()), or a loop
+    if(plain(end)) continue; // a loop
+    border_slides(g, cost, min_ratio, path, paths, reroutes);
+    if(tip(end) || tip(g.source(h0)) || path.size() < 3)
+      continue; // a leaf path (seam_detours())
     // length[i]: seam cost from the start to vertex i (target of path[i-1])
     std::vector<double> length(path.size() + 1, 0.);
     for(std::size_t i = 0; i < path.size(); ++i) length[i + 1] = length[i] + cost(path[i]);

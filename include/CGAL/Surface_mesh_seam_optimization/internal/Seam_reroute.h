@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
 // Rerouting a seam part that has no tip (between two vertices of a path
-// from junction to junction): cutting its shortcut and zipping the part
-// cannot be done by local operations, since the zip would start nowhere.
-// The region between the part and its shortcut changes sides instead.
+// from junction to junction, or from a vertex of a path to its end on the
+// input boundary): cutting its shortcut and zipping the part cannot be done
+// by local operations, since the zip would start nowhere. The region
+// between the part and its shortcut changes sides instead.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_REROUTE_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_REROUTE_H
@@ -29,8 +30,9 @@ namespace internal {
 // moved rigidly across it; since the two sides of an open seam differ in
 // shape, its side of the part then goes over to the other side in steps,
 // the region relaxing without flips after each. False, nothing changed, if
-// that region is not bounded by the two paths alone (the input boundary,
-// say) or cannot be laid out without flips. Overlaps are the caller's: if
+// that region is not bounded by the two paths alone (and, for a part and a
+// shortcut that end on the input boundary, the boundary between their ends)
+// or cannot be laid out without flips. Overlaps are the caller's: if
 // true, `before` holds the configuration to restore.
 inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_detour& d, Uv_snapshot& before)
 {
@@ -58,7 +60,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
       for(int k = 0; k < 3 && valid; ++k)
       {
         const int h = 3*f + k, o = cm.opposite[h];
-        if(o < 0) valid = false;
+        if(o < 0) valid = d.to_border; // (between the two ends on the boundary)
         else if(!on_cut[h] && !cm.is_seam(h) && !in_r[o / 3]) { in_r[o / 3] = 1; ++count; stack.push_back(o / 3); }
       }
     }
@@ -67,6 +69,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
       for(int k = 0; k < 3 && valid && in_r[f]; ++k)
       {
         const int h = 3*f + k, o = cm.opposite[h];
+        if(o < 0) continue;
         if(on_cut[h] || on_part[h]) valid = !in_r[o / 3];
         else if(cm.is_seam(h)) valid = in_r[o / 3] != 0;
       }
@@ -86,6 +89,19 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
     const int w_src = w == h ? Cut_mesh::prev(w) : w, w_dst = w == h ? w : Cut_mesh::prev(w);
     if(i == 0) { part_vertices.push_back(source(h)); inside.push_back(r_src); outside.push_back(w_src); }
     part_vertices.push_back(cm.corner_vertex[h]); inside.push_back(r_dst); outside.push_back(w_dst);
+  }
+
+  // An end that stays on the seam keeps corners of the region's copy outside
+  // the region (else the region went around the seam's other side, past a
+  // tip, say, and its end would leave the seam: not this move)
+  for(std::size_t i : { std::size_t(0), part_vertices.size() - 1 })
+  {
+    if(i + 1 == part_vertices.size() && d.to_border) continue; // (closes)
+    const int v = part_vertices[i], u = cm.corner_uv[inside[i]];
+    bool kept = false;
+    for(int k = vc.offset[v]; k < vc.offset[v + 1] && !kept; ++k)
+      kept = cm.corner_uv[vc.corners[k]] == u && !in_r[vc.corners[k] / 3];
+    if(!kept) return false;
   }
 
   // rigid motion of the region's side of the part onto the other side (2D Procrustes)
@@ -137,8 +153,8 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
         if(!on_loop[cm.uv_vertex[u]] && !moved[u]) { moved[u] = 1; move(&cm.uv[2*u]); }
       }
   }
-  // the region comes off along the shortcut
-  for(std::size_t i = 0; i + 1 < d.shortcut.size(); ++i)
+  // the region comes off along the shortcut (up to its boundary end, if it has one)
+  for(std::size_t i = 0; i + (d.to_border ? 0 : 1) < d.shortcut.size(); ++i)
   {
     const int v = cm.corner_vertex[d.shortcut[i]];
     std::vector<int> corners;
@@ -152,7 +168,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
   {
     const int v = part_vertices[i];
     const int keep = cm.corner_uv[outside[i]], drop = cm.corner_uv[inside[i]];
-    if(i == 0 || i + 1 == part_vertices.size())
+    if(i == 0 || (i + 1 == part_vertices.size() && !d.to_border))
     {
       // the ends stay on the seam: only the region's corners change sides
       for(int k = vc.offset[v]; k < vc.offset[v + 1]; ++k)
