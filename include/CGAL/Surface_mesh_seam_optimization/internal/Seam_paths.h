@@ -107,6 +107,15 @@ struct Uncut_paths
       }
     }
   }
+
+  // the halfedges of the cheapest path from the last run's start to w
+  std::vector<int> path_to(const Seam_graph& g, int w) const
+  {
+    std::vector<int> path;
+    for(int x = w; reached_by[x] >= 0; x = g.source(reached_by[x])) path.push_back(reached_by[x]);
+    std::reverse(path.begin(), path.end());
+    return path;
+  }
 };
 
 // For each leaf seam path, the part from one of its vertices to its tip
@@ -181,15 +190,16 @@ void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, cons
 {
   for(int direction = 0; direction < 2; ++direction)
   {
-    std::vector<int> p(path);
+    const int end = direction == 0 ? g.target(path.back()) : g.source(path.front());
+    const int other = direction == 0 ? g.source(path.front()) : g.target(path.back());
+    // (a path from boundary to boundary divides charts: its ends stay)
+    if(!g.on_border[end] || g.on_border[other] || g.seam_degree[end] != 1 || path.size() < 2) continue;
+    std::vector<int> p(path); // towards `end`
     if(direction == 1)
     {
       std::reverse(p.begin(), p.end());
       for(int& h : p) h = g.cm.opposite[h];
     }
-    const int end = g.target(p.back());
-    // (a path from boundary to boundary divides charts: its ends stay)
-    if(!g.on_border[end] || g.on_border[g.source(p.front())] || g.seam_degree[end] != 1 || p.size() < 2) continue;
     std::vector<double> length(p.size() + 1, 0.);
     for(std::size_t i = 0; i < p.size(); ++i) length[i + 1] = length[i] + cost(p[i]);
     double saving = 0;
@@ -207,9 +217,7 @@ void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, cons
           continue;
         saving = along - dw;
         best_i = i;
-        best_shortcut.clear();
-        for(int x = w; x != start; x = g.source(paths.reached_by[x])) best_shortcut.push_back(paths.reached_by[x]);
-        std::reverse(best_shortcut.begin(), best_shortcut.end());
+        best_shortcut = paths.path_to(g, w);
       }
     }
     if(saving > 0)
@@ -281,9 +289,7 @@ std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, dou
         {
           saving = along - dist[w];
           best_i = i; best_j = j;
-          best_shortcut.clear();
-          for(int x = w; x != start; x = g.source(paths.reached_by[x])) best_shortcut.push_back(paths.reached_by[x]);
-          std::reverse(best_shortcut.begin(), best_shortcut.end());
+          best_shortcut = paths.path_to(g, w);
         }
       }
     }

@@ -91,12 +91,14 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
     part_vertices.push_back(cm.corner_vertex[h]); inside.push_back(r_dst); outside.push_back(w_dst);
   }
 
+  // (a border slide's end on the boundary closes; the other ends stay on the seam)
+  auto stays = [&](std::size_t i) { return i == 0 || (i + 1 == part_vertices.size() && !d.to_border); };
   // An end that stays on the seam keeps corners of the region's copy outside
   // the region (else the region went around the seam's other side, past a
   // tip, say, and its end would leave the seam: not this move)
   for(std::size_t i : { std::size_t(0), part_vertices.size() - 1 })
   {
-    if(i + 1 == part_vertices.size() && d.to_border) continue; // (closes)
+    if(!stays(i)) continue;
     const int v = part_vertices[i], u = cm.corner_uv[inside[i]];
     bool kept = false;
     for(int k = vc.offset[v]; k < vc.offset[v + 1] && !kept; ++k)
@@ -168,7 +170,7 @@ inline bool reroute_seam(Cut_mesh& cm, const Vertex_corners& vc, const Seam_deto
   {
     const int v = part_vertices[i];
     const int keep = cm.corner_uv[outside[i]], drop = cm.corner_uv[inside[i]];
-    if(i == 0 || (i + 1 == part_vertices.size() && !d.to_border))
+    if(stays(i))
     {
       // the ends stay on the seam: only the region's corners change sides
       for(int k = vc.offset[v]; k < vc.offset[v + 1]; ++k)
