@@ -202,9 +202,9 @@ static Row run(const std::string& file, const Settings& settings)
 #endif
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.status = SMSO::get_error_code_name(r.status);
+  if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";
   if(!r.has_result())
   {
-    if(!r.message.empty()) std::cerr << row.name << ": " << r.message << "\n";
     // a capped descent whose map still has a tiny triangle: no result, but its
     // iterations were timed (the scaling benchmark's seconds per iteration)
     if(r.status == SMSO::ERROR_DEGENERATE_UV_RESULT && r.iterations > 0)

@@ -620,3 +620,84 @@ BOOST_AUTO_TEST_CASE(cgal_parameterizer_through_the_bridge_polyhedron)
 {
   check_cgal_parameterizer_through_bridge<Polyhedron>();
 }
+
+// Tutte's map of a large chart: the border rows eliminated, one sparse
+// Cholesky factorization for u and v (Fixed_border_solver_traits) gives
+// CGAL's map (BiCGSTAB with incomplete LU, per coordinate) up to the
+// iterative solver's tolerance; below the size limit, and for a system that is
+// not symmetric (mean value coordinates), CGAL's solver runs, to the last bit.
+BOOST_AUTO_TEST_CASE(tutte_by_one_factorization_gives_cgal_map)
+{
+  Surface_mesh m = load<Surface_mesh>(data_dir + "/bimba_i_f10000.obj");
+  Maps<Surface_mesh> maps(m);
+  mark_seam_path_from_border(m, maps.seam, 12);
+  SMSO::Seam_mesh_maker<Surface_mesh> maker(m, maps.seam);
+  typedef SMSO::Seam_mesh_maker<Surface_mesh>::Seam_mesh Seam_mesh;
+  Seam_mesh& smesh = maker.seam_mesh();
+  const auto bhd = maker.border_halfedge(*faces(m).begin());
+  BOOST_REQUIRE(bhd != boost::graph_traits<Seam_mesh>::halfedge_descriptor());
+  typedef SMP::Circular_border_arc_length_parameterizer_3<Seam_mesh> Border;
+  typedef SMSO::internal::Fixed_border_solver_traits Traits;
+  typedef Surface_mesh::Halfedge_index H;
+
+  auto cgal = m.add_property_map<H, SC::Point_2>("h:cgal").first;
+  auto direct = m.add_property_map<H, SC::Point_2>("h:direct").first;
+  auto small = m.add_property_map<H, SC::Point_2>("h:small").first;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(smesh, SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>(), bhd, cgal),
+                      SMP::OK);
+  const Traits by_factor(0), by_default;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(smesh, SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border, Traits>(
+                                                 Border(), by_factor), bhd, direct), SMP::OK);
+  BOOST_CHECK(by_factor.used_factorization());
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(smesh, SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border, Traits>(
+                                                 Border(), by_default), bhd, small), SMP::OK);
+  BOOST_CHECK(!by_default.used_factorization());
+
+  double largest = 0;
+  std::size_t differ = 0, corners = 0;
+  for(H h : halfedges(m))
+  {
+    if(is_border(h, m)) continue;
+    ++corners;
+    const SC::Point_2 a = get(cgal, h), b = get(direct, h);
+    largest = (std::max)(largest, (std::max)(std::abs(a.x() - b.x()), std::abs(a.y() - b.y())));
+    if(get(small, h) != a) ++differ;
+  }
+  BOOST_TEST_MESSAGE("Tutte by one factorization against CGAL's solver: largest UV difference " << largest
+                     << " on the unit circle's map, " << corners << " corners");
+  BOOST_CHECK_LT(largest, 1e-11);
+  BOOST_CHECK_EQUAL(differ, 0u);
+
+  // Tutte's equations: every interior vertex at the mean of its neighbours
+  double residual = 0;
+  for(auto v : vertices(smesh))
+  {
+    bool border = false;
+    double sx = 0, sy = 0;
+    int n = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, smesh), smesh))
+    {
+      if(is_border(h, smesh) || is_border(opposite(h, smesh), smesh)) border = true;
+      const SC::Point_2 q = get(direct, source(h, smesh));
+      sx += q.x(); sy += q.y(); ++n;
+    }
+    if(border) continue;
+    const SC::Point_2 p = get(direct, v);
+    residual = (std::max)(residual, std::hypot(p.x() - sx / n, p.y() - sy / n));
+  }
+  BOOST_CHECK_LT(residual, 1e-12);
+
+  // not symmetric: CGAL's solver, the same map
+  auto mvc = m.add_property_map<H, SC::Point_2>("h:mvc").first;
+  auto mvc_traits = m.add_property_map<H, SC::Point_2>("h:mvc_traits").first;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(smesh, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Border>(), bhd, mvc),
+                      SMP::OK);
+  const Traits mvc_factor(0);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(smesh, SMP::Mean_value_coordinates_parameterizer_3<Seam_mesh, Border, Traits>(
+                                                 Border(), mvc_factor), bhd, mvc_traits), SMP::OK);
+  BOOST_CHECK(!mvc_factor.used_factorization());
+  differ = 0;
+  for(H h : halfedges(m))
+    if(!is_border(h, m) && get(mvc, h) != get(mvc_traits, h)) ++differ;
+  BOOST_CHECK_EQUAL(differ, 0u);
+}

@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_to_disk.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Degenerate_triangle.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Fixed_border_solver_traits.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
@@ -483,7 +484,8 @@ Error_code initial_uv_map(const TriangleMesh& tm,
     typedef typename Maker::Seam_mesh                                            Seam_mesh;
     typedef typename SMP::internal::Kernel_traits<Seam_mesh>::Kernel::Point_2   SMP_point_2;
     typedef internal::Circular_border_arc_length_with_point_map<Seam_mesh, VPM>  Border;
-    typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border>          Tutte;
+    typedef SMP::Barycentric_mapping_parameterizer_3<Seam_mesh, Border,
+                                                     internal::Fixed_border_solver_traits> Tutte;
     typedef internal::Mean_value_coordinates_with_point_map<Seam_mesh, VPM, Border> Mean_value;
 
     std::vector<SMP_point_2> seam_uv_data(nh);
@@ -782,7 +784,12 @@ Error_code initial_parameterization(const TriangleMesh& tm,
 /// embedding (uniform weights), with CGAL's
 /// `Circular_border_parameterizer_3` and `Barycentric_mapping_parameterizer_3`
 /// on a `CGAL::Seam_mesh` (see `Seam_mesh_maker`); such a map has no flipped
-/// triangle in exact arithmetic. A closed genus-0 chart is first cut by a slit
+/// triangle in exact arithmetic. On charts of 20000 interior vertices or
+/// more, Tutte's system, its border rows eliminated (symmetric positive
+/// definite), is solved for both coordinates with one factorization of
+/// `Default_sparse_solver_traits` instead of CGAL's default iterative solver
+/// (the same map up to that solver's tolerance; 96544 faces: 2.8 -> 1.1 s on
+/// a busy machine). A closed genus-0 chart is first cut by a slit
 /// of two edges sharing a vertex: at the vertex farthest from the centroid of
 /// the chart's triangle corners (the tip of a protrusion, where seams tend to
 /// end), the two edges not on one triangle that make the straightest line. On

@@ -16,6 +16,7 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_TO_DISK_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_CUT_TO_DISK_H
 
+#include <CGAL/Surface_mesh_seam_optimization/internal/Fixed_border_solver_traits.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Shortest_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
@@ -409,7 +410,8 @@ inline bool map_filled_chart(const Flat_chart& ch, const std::vector<char>& slit
   auto uvpm = disk.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   const SMP::Error_code status = mean_value
     ? SMP::parameterize(disk, SMP::Mean_value_coordinates_parameterizer_3<Disk>(), bhd, uvpm)
-    : SMP::parameterize(disk, SMP::Barycentric_mapping_parameterizer_3<Disk>(), bhd, uvpm);
+    : SMP::parameterize(disk, SMP::Barycentric_mapping_parameterizer_3<Disk, CGAL::Default, Fixed_border_solver_traits>(),
+                        bhd, uvpm);
   if(status != SMP::OK) return false;
   for(int i = 0; i < F; ++i)
     for(int k = 0; k < 3; ++k)
