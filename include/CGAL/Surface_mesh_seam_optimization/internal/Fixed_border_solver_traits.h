@@ -42,9 +42,10 @@ public:
   typedef Iterative::Vector Vector;
   typedef Iterative::NT NT;
 
-  // the size from which the default solver's factorization takes over: the
-  // one from which CHOLMOD does (Default_sparse_solver_traits), so that every
-  // chart of the 40-mesh benchmark (at most 20000 faces) keeps its map
+  // interior vertices from which the factorization takes over: half the
+  // unknowns from which Default_sparse_solver_traits uses CHOLMOD (2 per
+  // vertex in the Newton systems), so that every chart of the 40-mesh
+  // benchmark (at most 20000 faces) keeps its map
   static constexpr Eigen::Index default_minimum_unknowns = Default_sparse_solver_traits::default_threshold / 2;
 
   explicit Fixed_border_solver_traits(Eigen::Index minimum_unknowns = default_minimum_unknowns)
@@ -57,6 +58,8 @@ public:
   {
     D = 1;
     const Eigen::SparseMatrix<double>& M = A.eigen_object();
+    // (fewer rows than the minimum: no copy, no comparison, CGAL's solver)
+    if(M.rows() < m_minimum) { m->direct = false; return m->iterative.linear_solver(A, B, X, D); }
     if(!m->prepared || !same_matrix(M)) prepare(M);
     if(!m->direct) return m->iterative.linear_solver(A, B, X, D);
 
