@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold_mesher.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_paths.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Seam_reroute.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Serial_openmp_scope.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Stale_factor_cg.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
@@ -34,12 +35,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <random>
 #include <set>
 #include <string>
 #include <thread>
+#ifdef __unix__
+#include <stdlib.h>
+#include <unistd.h>
+#endif
 
 typedef CGAL::Simple_cartesian<double> K;
 typedef K::Point_2 Point_2;
@@ -348,6 +356,89 @@ BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
   BOOST_TEST(!tiny.uses_cholmod()); // fell back for this pattern
   BOOST_TEST((M.selfadjointView<Eigen::Lower>() * y - c).norm() <= 1e-12);
 }
+
+#ifdef __unix__
+// what a call writes on the standard output (the descriptor, as C code writes it)
+template <typename F>
+std::string captured_stdout(F f)
+{
+  std::fflush(stdout);
+  char name[] = "/tmp/smso_stdout_XXXXXX";
+  const int fd = mkstemp(name);
+  BOOST_REQUIRE(fd >= 0);
+  const int saved = dup(1);
+  dup2(fd, 1);
+  f();
+  std::fflush(stdout);
+  dup2(saved, 1);
+  close(saved);
+  close(fd);
+  std::ifstream in(name);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::remove(name);
+  return text;
+}
+#endif
+
+BOOST_AUTO_TEST_CASE(openmp_regions_of_the_calling_thread_are_serial_in_a_scope)
+{
+  namespace I = SMSO::internal;
+  if(!I::openmp_runtime_available())
+  {
+    BOOST_TEST_MESSAGE("no OpenMP runtime loaded: the scope does nothing");
+    BOOST_TEST(I::openmp_max_active_levels() == -1);
+    return;
+  }
+  const int before = I::openmp_max_active_levels();
+  BOOST_REQUIRE(before > 0);
+  {
+    I::Serial_openmp_scope scope;
+    BOOST_TEST(I::openmp_max_active_levels() == 0);
+    int other = -2; // another thread keeps its own setting
+    std::thread([&other] { other = I::openmp_max_active_levels(); }).join();
+    BOOST_TEST(other == before);
+    {
+      I::Serial_openmp_scope nested;
+      BOOST_TEST(I::openmp_max_active_levels() == 0);
+    }
+    BOOST_TEST(I::openmp_max_active_levels() == 0);
+  }
+  BOOST_TEST(I::openmp_max_active_levels() == before);
+  {
+    I::Serial_openmp_scope inactive(false);
+    BOOST_TEST(I::openmp_max_active_levels() == before);
+  }
+}
+
+#if defined(CGAL_SMSO_HAS_CHOLMOD) && defined(__unix__)
+BOOST_AUTO_TEST_CASE(cholmod_traits_print_nothing_when_a_factorization_fails)
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  Matrix M(3, 3); // indefinite: the supernodal Cholesky factorization fails
+  M.insert(0, 0) = 2.; M.insert(1, 1) = -1.; M.insert(2, 2) = 3.; M.insert(2, 0) = 0.5;
+  M.makeCompressed();
+  // CHOLMOD's own default prints a warning (so the capture sees it)...
+  const std::string raw = captured_stdout([&] {
+    Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> llt;
+    llt.compute(M);
+    BOOST_TEST(llt.info() != Eigen::Success);
+  });
+  BOOST_TEST(raw.find("CHOLMOD") != std::string::npos);
+  // ...the package's traits do not: the result is the return value
+  const std::string quiet = captured_stdout([&] {
+    SMSO::Eigen_sparse_solver_traits<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> > llt;
+    BOOST_TEST(llt.analyze_pattern(M));
+    BOOST_TEST(!llt.factorize(M));
+    SMSO::Default_sparse_solver_traits fallback(1);
+    Eigen::VectorXd c = Eigen::VectorXd::Ones(3), y;
+    BOOST_TEST((fallback.analyze_pattern(M) && fallback.factorize(M) && fallback.solve(c, y)));
+    BOOST_TEST(!fallback.uses_cholmod());
+  });
+  BOOST_TEST(quiet.empty(), "printed: " << quiet);
+  // and the calling thread's OpenMP setting is as before the calls
+  BOOST_TEST(SMSO::internal::openmp_max_active_levels() != 0);
+}
+#endif
 
 BOOST_AUTO_TEST_CASE(timings_add_phase_by_phase)
 {

@@ -7,6 +7,8 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SPARSE_SOLVER_TRAITS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_SPARSE_SOLVER_TRAITS_H
 
+#include <CGAL/Surface_mesh_seam_optimization/internal/Serial_openmp_scope.h>
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #ifdef CGAL_SMSO_HAS_CHOLMOD
@@ -15,44 +17,75 @@
 
 #include <algorithm>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// Eigen's CHOLMOD wrappers are the solvers with a `cholmod()` common
+template <typename Solver, typename = void>
+struct Is_cholmod_solver : std::false_type {};
+template <typename Solver>
+struct Is_cholmod_solver<Solver, std::void_t<decltype(std::declval<Solver&>().cholmod())> >
+  : std::true_type {};
+
+} // namespace internal
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
 /// Wraps any Eigen sparse direct solver with `analyzePattern()`,
 /// `factorize()`, `solve()` and `info()` (the solver reads the lower triangle).
+/// For CHOLMOD's solvers (`Eigen::Cholmod*`), CHOLMOD prints nothing (a
+/// failure is the return value), and OpenMP parallel regions that CHOLMOD
+/// opens during a call run on the calling thread alone: CHOLMOD 3 built with
+/// OpenMP uses a fixed 4 threads for memory loops that gain nothing from
+/// them (measured 1.6x slower on 2 cores); the setting is the calling
+/// thread's own and is restored after each call.
 /// \cgalModels `SparseSolverTraits`
 template <typename EigenSolver>
 class Eigen_sparse_solver_traits
 {
+  static constexpr bool is_cholmod = internal::Is_cholmod_solver<EigenSolver>::value;
+
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
   typedef Eigen::VectorXd Vector;
 
-  Eigen_sparse_solver_traits() : m_solver(new EigenSolver) {}
+  Eigen_sparse_solver_traits() : m_solver(new EigenSolver)
+  {
+    quiet(*m_solver, std::integral_constant<bool, is_cholmod>());
+  }
 
   /// symbolic analysis; called once per sparsity pattern
   bool analyze_pattern(const Matrix& A)
   {
+    internal::Serial_openmp_scope scope(is_cholmod);
     m_solver->analyzePattern(A);
     return m_solver->info() == Eigen::Success;
   }
   /// numeric factorization of a matrix with the analysed pattern
   bool factorize(const Matrix& A)
   {
+    internal::Serial_openmp_scope scope(is_cholmod);
     m_solver->factorize(A);
     return m_solver->info() == Eigen::Success;
   }
   bool solve(const Vector& b, Vector& x)
   {
+    internal::Serial_openmp_scope scope(is_cholmod);
     x = m_solver->solve(b);
     return m_solver->info() == Eigen::Success && x.allFinite();
   }
   EigenSolver& eigen_solver() { return *m_solver; }
 
 private:
+  static void quiet(EigenSolver&, std::false_type) {}
+  // print level 0: no warning on stdout when a factorization fails (the
+  // default solver then falls back to LDL^T; the caller sees the result)
+  static void quiet(EigenSolver& solver, std::true_type) { solver.cholmod().print = 0; }
+
   // Eigen's solvers are not copyable; traits are passed by value like CGAL's.
   std::shared_ptr<EigenSolver> m_solver;
 };
