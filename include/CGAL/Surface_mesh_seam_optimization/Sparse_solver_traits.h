@@ -91,9 +91,8 @@ private:
 };
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationRef
-/// Eigen's simplicial LDL^T with AMD ordering (faster than CHOLMOD's
-/// supernodal factorization below about 30k unknowns, see
-/// `Default_sparse_solver_traits`). The permuted matrix's pattern, and where
+/// Eigen's simplicial LDL^T with AMD ordering (the default's choice below
+/// 40000 unknowns, see `Default_sparse_solver_traits`). The permuted matrix's pattern, and where
 /// each entry of the given lower triangle goes in it, are computed with the
 /// ordering, so that every factorization only scatters the values (Eigen's
 /// `SimplicialLDLT` with an ordering permutes a copy of the matrix at every
@@ -206,7 +205,8 @@ typedef Eigen_sparse_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatr
 /// The default: `Eigen_simplicial_ldlt_traits` for systems of fewer unknowns
 /// than a threshold, and above it CHOLMOD's supernodal Cholesky factorization
 /// (BLAS level 3: measured 1.4x faster at 48k faces, 2.3x at 97k and 5.6x at
-/// 386k with OpenBLAS, and slower below about 30k unknowns), when the package
+/// 386k with OpenBLAS; below the threshold, with two starts side by side in
+/// the seam loop, it was no faster and took more memory), when the package
 /// is built with CHOLMOD (see `Cholmod_traits`); without it, always the
 /// former. The choice depends on the number of unknowns alone (the result is
 /// deterministic), and a supernodal factorization that fails (a matrix that
@@ -231,7 +231,22 @@ public:
   /// every few iterations (the seam loop).
   explicit Default_sparse_solver_traits(Eigen::Index threshold = default_threshold,
                                         bool nested_dissection = false)
-    : m_threshold(threshold), m_nested_dissection(nested_dissection) {}
+    : m_threshold(threshold), m_nested_dissection(nested_dissection)
+  {
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+    // Every supernode has a fixed cost (BLAS calls and, in an OpenMP build of
+    // CHOLMOD, parallel regions: a futex system call each, even serial), so
+    // small supernodes are merged 3x more eagerly than CHOLMOD's default
+    // {4, 16, 48} columns, at some extra fill. Factorization of mesh
+    // Hessians (2x2 blocks): 48k unknowns 0.096 -> 0.065 s, 97k 0.216 ->
+    // 0.152 s (AMD: 0.32 -> 0.23 s), 386k 1.05 -> 0.80 s; the optimum was
+    // 3-4x, 8x is slower again.
+    cholmod_common& c = m_supernodal.eigen_solver().cholmod();
+    c.nrelax[0] = 12;
+    c.nrelax[1] = 48;
+    c.nrelax[2] = 144;
+#endif
+  }
 
   /// whether the last analysed pattern is factorized by CHOLMOD
   bool uses_cholmod() const { return m_large && !m_fallback; }
