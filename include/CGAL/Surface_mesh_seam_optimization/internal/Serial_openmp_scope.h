@@ -13,8 +13,8 @@
 // on the thread alone, for the scope's lifetime only.
 //
 // The package does not depend on OpenMP: without -fopenmp the two runtime
-// functions are weak references, resolved by the runtime that CHOLMOD
-// loaded (if any); elsewhere the scope does nothing.
+// functions are looked up (dlsym) in the runtime that CHOLMOD loaded, if
+// any; elsewhere the scope does nothing.
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SERIAL_OPENMP_SCOPE_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SERIAL_OPENMP_SCOPE_H
@@ -22,39 +22,48 @@
 #if defined(_OPENMP)
 #include <omp.h>
 #define CGAL_SMSO_OPENMP_LEVELS_DIRECT 1
-#elif defined(__ELF__) && (defined(__GNUC__) || defined(__clang__))
-extern "C" {
-void omp_set_max_active_levels(int) __attribute__((weak));
-int omp_get_max_active_levels(void) __attribute__((weak));
-}
-#define CGAL_SMSO_OPENMP_LEVELS_WEAK 1
+#elif defined(__unix__) || defined(__APPLE__)
+// looked up at run time: a weak declaration would also make the user's own
+// references to these functions weak (and null once the linker drops libgomp)
+#include <dlfcn.h>
+#define CGAL_SMSO_OPENMP_LEVELS_DLSYM 1
 #endif
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-// whether an OpenMP runtime is there to ask (linked or loaded by a library)
-inline bool openmp_runtime_available()
+struct Openmp_levels_api
 {
+  void (*set)(int) = nullptr;
+  int (*get)() = nullptr;
+};
+
+// the runtime's functions, or null ones without a runtime (looked up once)
+inline const Openmp_levels_api& openmp_levels_api()
+{
+  static const Openmp_levels_api api = [] {
+    Openmp_levels_api a;
 #if defined(CGAL_SMSO_OPENMP_LEVELS_DIRECT)
-  return true;
-#elif defined(CGAL_SMSO_OPENMP_LEVELS_WEAK)
-  return &omp_set_max_active_levels != nullptr && &omp_get_max_active_levels != nullptr;
-#else
-  return false;
+    a.set = &omp_set_max_active_levels;
+    a.get = &omp_get_max_active_levels;
+#elif defined(CGAL_SMSO_OPENMP_LEVELS_DLSYM)
+    a.set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+    a.get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+    if(!a.set || !a.get) a = Openmp_levels_api();
 #endif
+    return a;
+  }();
+  return api;
 }
+
+// whether an OpenMP runtime is there to ask (linked or loaded by a library)
+inline bool openmp_runtime_available() { return openmp_levels_api().get != nullptr; }
 
 // the calling thread's max-active-levels-var, or -1 without a runtime
 inline int openmp_max_active_levels()
 {
-  if(!openmp_runtime_available()) return -1;
-#if defined(CGAL_SMSO_OPENMP_LEVELS_DIRECT) || defined(CGAL_SMSO_OPENMP_LEVELS_WEAK)
-  return omp_get_max_active_levels();
-#else
-  return -1;
-#endif
+  return openmp_runtime_available() ? openmp_levels_api().get() : -1;
 }
 
 class Serial_openmp_scope
@@ -62,19 +71,13 @@ class Serial_openmp_scope
 public:
   explicit Serial_openmp_scope(bool active = true)
   {
-#if defined(CGAL_SMSO_OPENMP_LEVELS_DIRECT) || defined(CGAL_SMSO_OPENMP_LEVELS_WEAK)
     if(!active || !openmp_runtime_available()) return;
-    m_saved = omp_get_max_active_levels();
-    if(m_saved != 0) omp_set_max_active_levels(0);
-#else
-    (void)active;
-#endif
+    m_saved = openmp_levels_api().get();
+    if(m_saved != 0) openmp_levels_api().set(0);
   }
   ~Serial_openmp_scope()
   {
-#if defined(CGAL_SMSO_OPENMP_LEVELS_DIRECT) || defined(CGAL_SMSO_OPENMP_LEVELS_WEAK)
-    if(m_saved > 0) omp_set_max_active_levels(m_saved);
-#endif
+    if(m_saved > 0) openmp_levels_api().set(m_saved);
   }
   Serial_openmp_scope(const Serial_openmp_scope&) = delete;
   Serial_openmp_scope& operator=(const Serial_openmp_scope&) = delete;
