@@ -231,9 +231,15 @@ public:
   /// every few iterations (the seam loop).
   explicit Default_sparse_solver_traits(Eigen::Index threshold = default_threshold,
                                         bool nested_dissection = false)
-    : m_threshold(threshold), m_nested_dissection(nested_dissection)
+    : m_threshold(threshold)
   {
 #ifdef CGAL_SMSO_HAS_CHOLMOD
+    cholmod_common& c = m_supernodal.eigen_solver().cholmod();
+    if(nested_dissection)
+    {
+      c.nmethods = 1;
+      c.method[0].ordering = CHOLMOD_NESDIS;
+    }
     // Every supernode has a fixed cost (BLAS calls and, in an OpenMP build of
     // CHOLMOD, parallel regions: a futex system call each, even serial), so
     // small supernodes are merged 3x more eagerly than CHOLMOD's default
@@ -241,10 +247,11 @@ public:
     // Hessians (2x2 blocks): 48k unknowns 0.096 -> 0.065 s, 97k 0.216 ->
     // 0.152 s (AMD: 0.32 -> 0.23 s), 386k 1.05 -> 0.80 s; the optimum was
     // 3-4x, 8x is slower again.
-    cholmod_common& c = m_supernodal.eigen_solver().cholmod();
     c.nrelax[0] = 12;
     c.nrelax[1] = 48;
     c.nrelax[2] = 144;
+#else
+    (void)nested_dissection;
 #endif
   }
 
@@ -256,16 +263,7 @@ public:
     m_fallback = false;
 #ifdef CGAL_SMSO_HAS_CHOLMOD
     m_large = A.rows() >= m_threshold;
-    if(m_large)
-    {
-      if(m_nested_dissection)
-      {
-        cholmod_common& c = m_supernodal.eigen_solver().cholmod();
-        c.nmethods = 1;
-        c.method[0].ordering = CHOLMOD_NESDIS;
-      }
-      return m_supernodal.analyze_pattern(A);
-    }
+    if(m_large) return m_supernodal.analyze_pattern(A);
 #endif
     return m_ldlt.analyze_pattern(A);
   }
@@ -291,7 +289,6 @@ public:
 
 private:
   Eigen::Index m_threshold;
-  bool m_nested_dissection;
   bool m_large = false, m_fallback = false;
   Eigen_simplicial_ldlt_traits m_ldlt;
 #ifdef CGAL_SMSO_HAS_CHOLMOD
