@@ -523,6 +523,28 @@ BOOST_AUTO_TEST_CASE(arap_from_the_default_map_descends_from_the_minimum_of_e_sd
   BOOST_TEST(arap.initial_distortion == sd.initial_distortion); // the same start
 }
 
+// Tutte's map of the octopus squeezes its tentacles below 1e-12 of the
+// chart's area, which one Newton iteration does not undo: a run capped there
+// says so (not only "face f is degenerate"), and writes nothing.
+BOOST_AUTO_TEST_CASE(a_run_stopped_before_it_opened_the_squeezed_triangles_says_why_it_wrote_nothing)
+{
+  Surface_mesh sm = read_octopus();
+  auto uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(7, 7)).first;
+  const auto capped = SMSO::minimize_distortion(sm, uv, SMSO_np::number_of_iterations(std::size_t(1)));
+  BOOST_TEST_MESSAGE("octopus, 1 iteration: " << SMSO::get_error_code_name(capped.status) << " [" << capped.message << "]");
+  BOOST_TEST(capped.status == SMSO::ERROR_DEGENERATE_UV_RESULT);
+  BOOST_TEST(capped.message.find("stopped after 1 iterations (WARNING_MAXIMUM_ITERATIONS)") != std::string::npos,
+             capped.message);
+  BOOST_TEST(capped.message.find("allow more iterations") != std::string::npos, capped.message);
+  std::size_t untouched = 0;
+  for(auto h : halfedges(sm)) untouched += get(uv, h) == Point_2(7, 7);
+  BOOST_TEST(untouched == sm.number_of_halfedges());
+  // uncapped, the same call opens them
+  const auto full = SMSO::minimize_distortion(sm, uv);
+  BOOST_TEST(full.status == SMSO::OK);
+  BOOST_TEST(SMSO::number_of_flipped_triangles(sm, uv) == 0u);
+}
+
 // A user's map that squeezes triangles below ARAP's area floor (the mean
 // value coordinates parameterizer's, on the cat) is descended from E_SD's
 // minimum too: ARAP's own descent stopped after 5 iterations at ARAP 0.424

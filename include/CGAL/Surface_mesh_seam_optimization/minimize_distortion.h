@@ -236,8 +236,19 @@ Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
   result.timings += sd_timings;
   if(result.status == ERROR_LINEAR_SOLVER) return result;
   // (the line search never allows it: a last check before anything is written)
-  if(internal::count_invalid_uv_triangles(cm, &result.message) > 0)
+  std::string first_invalid;
+  if(const std::size_t invalid = internal::count_invalid_uv_triangles(cm, &first_invalid))
   {
+    // Valid but still squeezed triangles of the initial map (Tutte's maps of
+    // long protrusions): the descent was stopped before it opened them.
+    const bool stopped = result.status == WARNING_MAXIMUM_ITERATIONS || result.status == WARNING_TIME_LIMIT;
+    if(stopped && internal::first_face_outside_barrier_domain(cm) == cm.number_of_faces())
+      result.message = "the descent stopped after " + std::to_string(result.iterations) + " iterations (" +
+                       get_error_code_name(result.status) + ") with " + std::to_string(invalid) +
+                       " triangles still squeezed below 1e-12 of their chart's area (" + first_invalid +
+                       "; initial maps squeeze long protrusions so): allow more iterations or time";
+    else
+      result.message = first_invalid;
     result.status = ERROR_DEGENERATE_UV_RESULT;
     return result;
   }
