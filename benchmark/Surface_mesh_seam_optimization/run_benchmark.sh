@@ -19,15 +19,16 @@
 #   (default)      every mesh of reference_optcuts.csv
 #   mesh ...       explicit mesh names (in DATA/benchmark) or .obj paths; mode "custom"
 #   --scaling      seconds and peak memory against faces on DATA/scalability/lucy_o_f*
-#                  and two Loop subdivisions of lucy_o_f24136 (96544 and 386176 faces,
-#                  made once into BUILD/scaling_meshes), with least-squares exponents
+#                  and Loop subdivisions of lucy_o_f24136 and lucy_o_f48275 (96544,
+#                  386176 and 772400 faces, made once into BUILD/scaling_meshes), with
+#                  least-squares exponents
 #                  (see run_scaling.sh): minimize_distortion() on every size (to
 #                  convergence up to --converge-max-faces, else 20 Newton iterations),
 #                  and optimize_seams() on the sizes that fit --time-limit
 #   --time-limit S (scaling) cancel optimize_seams() past S seconds (default 900); a
 #                  size predicted to take over 1.5 S, or larger than one that was
 #                  cancelled, is not run
-#   --converge-max-faces N (scaling) default 400000
+#   --converge-max-faces N (scaling) default 800000
 #   --max-faces N  (scaling) leave out the meshes with more than N faces
 #   --append FILE  (scaling) also put the Markdown report into FILE, replacing the
 #                  section of an earlier scaling run
@@ -52,7 +53,7 @@ mode=full
 timeout_s=
 time_limit=900
 max_faces=0
-converge_max_faces=400000
+converge_max_faces=800000
 append_to=
 bound=4.1
 bijective=1

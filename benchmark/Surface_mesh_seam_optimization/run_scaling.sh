@@ -2,9 +2,10 @@
 # The scaling mode of run_benchmark.sh (run it as `run_benchmark.sh --scaling`,
 # which builds the programs and passes the arguments below).
 #
-# On the lucy_o_f* series (6k to 48k faces, a topological disk) and two Loop
-# subdivisions of lucy_o_f24136 (96544 and 386176 faces, made once into
-# BUILD/scaling_meshes, not committed), in order of size, one process per run:
+# On the lucy_o_f* series (6k to 48k faces, a topological disk) and Loop
+# subdivisions of lucy_o_f24136 (1 and 2 steps: 96544 and 386176 faces) and
+# lucy_o_f48275 (2 steps: 772400 faces), made once into BUILD/scaling_meshes
+# (not committed), in order of size, one process per run:
 # - distortion only: the initial map (circle boundary + Tutte) timed alone,
 #   then minimize_distortion() as a user calls it (seams fixed: none; from
 #   16000 faces it starts from coarser meshes' maps), with the default
@@ -36,9 +37,11 @@ for f in 6032 12067 24136 48275; do
   [ -f "$file" ] || { echo "missing $file" >&2; exit 2; }
   series+=("$file")
 done
-base=$data_dir/scalability/lucy_o_f24136.obj
-for steps in 1 2; do
-  file=$mesh_dir/lucy_o_f24136_loop$steps.obj
+# (faces x4 per step: 96544, 386176, and 772400 from lucy_o_f48275)
+for base_steps in 24136:1 24136:2 48275:2; do
+  base=$data_dir/scalability/lucy_o_f${base_steps%:*}.obj
+  steps=${base_steps#*:}
+  file=$mesh_dir/lucy_o_f${base_steps%:*}_loop$steps.obj
   if [ ! -s "$file" ]; then
     tmp=${file%.obj}.part.obj # the writer picks the format from the extension
     "$sub_bin" "$base" "$tmp" "$steps" >&2 && mv "$tmp" "$file" || { echo "subdivision failed" >&2; exit 1; }
@@ -195,8 +198,9 @@ L.append(f"- date: {date}; git commit: {commit}" +
          (f" (working tree had {dirty} uncommitted change(s) in include/ or the benchmark source)" if dirty != "0" else ""))
 L.append(f"- machine: {nproc} cores (nproc), {cpu}; load average at start {load_before}, at end {load_after} "
          "(the machine is shared with other jobs: wall times are noisy, one run per size)")
-L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topological disk), and lucy_o_f24136 "
-         "after 1 and 2 steps of Loop subdivision (CGAL::Subdivision_method_3, made by `subdivide_mesh`)")
+L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topological disk), lucy_o_f24136 "
+         "after 1 and 2 steps of Loop subdivision and lucy_o_f48275 after 2 (CGAL::Subdivision_method_3, made by "
+         "`subdivide_mesh`)")
 L.append(f"- distortion only: the initial map alone (circle boundary + Tutte through Surface_mesh_parameterization; "
          f"\"init s\"), then `minimize_distortion()` as a user calls it (\"dist. s\": the whole call, its own initial "
          f"map included, and from 16000 faces its start from coarser meshes), seams fixed (none), default solver "

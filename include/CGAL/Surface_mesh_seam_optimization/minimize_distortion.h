@@ -135,7 +135,9 @@ namespace Surface_mesh_seam_optimization {
 ///
 /// \return the status (the user's maps are untouched unless `has_result()`;
 ///   a result with a flipped or degenerate triangle is never written:
-///   `ERROR_DEGENERATE_UV_RESULT`), E_SD of the result (as written and at its
+///   `ERROR_DEGENERATE_UV_RESULT`; a run stopped by `number_of_iterations` or
+///   `time_limit` before it opened the initial map's squeezed triangles ends so, and
+///   `message` says how many are left), E_SD of the result (as written and at its
 ///   optimal uniform scale), seam length, charts, iterations.
 template <typename TriangleMesh, typename UVMap,
           typename NamedParameters = parameters::Default_named_parameters>
