@@ -1007,6 +1007,25 @@ BOOST_AUTO_TEST_CASE(two_starts_are_deterministic)
   }
 }
 
+// The cat's charts never overlap (see the_scaffold_waits_until_charts_overlap):
+// the first start's run is the relaxed problem's and already bijective, so
+// the third start ends without a scaffold phase and the call gives the
+// two starts' result, to the last bit.
+BOOST_AUTO_TEST_CASE(a_third_start_adds_nothing_where_the_charts_never_overlap)
+{
+  Run two, three;
+  run("cat_f1500.obj", two, SMSO_np::number_of_starts(2));
+  run("cat_f1500.obj", three, SMSO_np::number_of_starts(3));
+  BOOST_TEST(three.result.status == SMSO::OK);
+  BOOST_TEST(three.result.start == two.result.start);
+  BOOST_TEST(three.result.start < 2u);
+  BOOST_TEST(three.result.scaffold_rebuilds == 0u);
+  BOOST_TEST(three.result.seam_length == two.result.seam_length);
+  BOOST_TEST(three.result.distortion == two.result.distortion);
+  BOOST_TEST(three.result.iterations == two.result.iterations);
+  check_valid(three);
+}
+
 // hand1 (413 faces): with the scaffold from the start, the cutting phase
 // takes many cheap cuts once the fingers press on the palm (seams 10.08, the
 // reference's 7.52); the third start cuts without the scaffold first (6.79,
