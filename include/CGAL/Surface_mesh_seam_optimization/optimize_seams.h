@@ -114,8 +114,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // from the start takes its cuts while the charts' parts press on each other
   // and buys many cheap ones instead (rgb_dragon_o_f8000: 28.6 against 21.4;
   // notes/issue19). The run without the scaffold is the first start's up to
-  // the end of its lazy phase (no overlap yet): it forks from there (or is
-  // the first start's, if that phase never ends). Both phases run within the
+  // the end of its lazy phase (no overlap yet): it forks from there (if that
+  // phase never ends, there is nothing to relax and it ends). Both phases run within the
   // second start's iteration budget, on their own maps (made only for a
   // third start).
   auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
