@@ -197,13 +197,14 @@ double descend(Cut_mesh& c, const SMSO::internal::Newton_settings& settings, int
 // A flat strip of 12 x 1 squares, one chart, mapped onto `turns` turns of
 // an annulus (x along the strip -> angle, y across -> radius, inwards:
 // counterclockwise triangles); its ends overlap from one turn on.
-Cut_mesh bent_strip(double turns)
+// (`neck`: the column of vertices where the strip is `neck_width` wide, not 0.5)
+Cut_mesh bent_strip(double turns, int neck = -1, double neck_width = 0.5)
 {
   const int n = 12;
   Surface_mesh sm;
   std::vector<Surface_mesh::Vertex_index> v;
   for(int j = 0; j <= 1; ++j)
-    for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, 0.5 * j, 0.)));
+    for(int i = 0; i <= n; ++i) v.push_back(sm.add_vertex(Point_3(i, (i == neck ? neck_width : 0.5) * j, 0.)));
   for(int i = 0; i < n; ++i)
   {
     sm.add_face(v[i], v[i + 1], v[n + 1 + i + 1]);
@@ -1521,6 +1522,76 @@ BOOST_AUTO_TEST_CASE(a_chart_that_overlaps_itself_is_cut_between_the_overlapping
   BOOST_TEST(seam >= 0.5 - 1e-12);
   BOOST_TEST(seam <= std::sqrt(1.25) + 1e-12);
   // a second call finds nothing to split
+  BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
+}
+
+// The same strip, 0.1 wide at x = 4: its ends (x < 3, x > 9) overlap, and
+// the cheapest cut between them is that neck (3D length 0.1), not the middle
+// between the overlapping triangles (the geodesic Voronoi boundary, x = 6).
+// With seam costs, the cheapest by cost: x = 8 where an edge costs 0.05.
+BOOST_AUTO_TEST_CASE(a_self_overlapping_chart_is_cut_where_its_overlapping_ends_join_most_cheaply)
+{
+  auto cut_at = [](Cut_mesh& cm, const std::vector<double>* weight) {
+    BOOST_REQUIRE(SMSO::internal::split_self_overlapping_charts(cm, weight) == 1u);
+    BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+    std::vector<int> chart;
+    BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
+    double x = -1;
+    int seams = 0;
+    for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+      if(cm.opposite[h] > int(h) && cm.is_seam(int(h)))
+      {
+        ++seams;
+        x = cm.points[3 * cm.corner_vertex[h]];
+        BOOST_TEST(cm.points[3 * cm.corner_vertex[cm.prev(int(h))]] == x); // across the strip
+      }
+    BOOST_TEST(seams == 1);
+    for(int k = 0; k < 2; ++k)
+    {
+      std::vector<int> tri;
+      for(std::size_t f = 0; f < chart.size(); ++f)
+        if(chart[f] == k) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
+      BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
+    }
+    return x;
+  };
+  Cut_mesh cm = bent_strip(1.25, 4, 0.1);
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
+  BOOST_TEST(cut_at(cm, nullptr) == 4.);
+
+  cm = bent_strip(1.25, 4, 0.1);
+  std::vector<double> weight(cm.corner_vertex.size(), 1.);
+  for(std::size_t h = 0; h < weight.size(); ++h)
+    if(cm.points[3 * cm.corner_vertex[h]] == 8 && cm.points[3 * cm.corner_vertex[cm.prev(int(h))]] == 8)
+      weight[h] = 0.1;
+  BOOST_TEST(cut_at(cm, &weight) == 8.);
+}
+
+// A strip on 2.25 turns overlaps itself all along: its overlapping triangles
+// form one layer. The split cuts it until no chart overlaps itself, each
+// corner keeping its UV.
+BOOST_AUTO_TEST_CASE(a_chart_overlapping_itself_all_along_is_cut_until_no_chart_overlaps_itself)
+{
+  Cut_mesh cm = bent_strip(2.25);
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
+  std::vector<double> before(2 * cm.corner_uv.size());
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    for(int d = 0; d < 2; ++d) before[2*c + d] = cm.uv[2 * cm.corner_uv[c] + d];
+  const std::size_t cuts = SMSO::internal::split_self_overlapping_charts(cm);
+  BOOST_TEST(cuts >= 2u); // one cut leaves a piece longer than a turn
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+  std::vector<int> chart;
+  const std::size_t n = cm.compute_charts(chart);
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::vector<int> tri;
+    for(std::size_t f = 0; f < chart.size(); ++f)
+      if(chart[f] == int(k)) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
+    BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
+  }
+  BOOST_TEST(n == cuts + 1); // each cut splits one chart in two
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    for(int d = 0; d < 2; ++d) BOOST_TEST(cm.uv[2 * cm.corner_uv[c] + d] == before[2*c + d]);
   BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
 }
 

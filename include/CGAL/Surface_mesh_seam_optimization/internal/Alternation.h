@@ -84,7 +84,7 @@ public:
                            Visitor& visitor)
     : m_cm(cm), m_energy(energy), m_weight(halfedge_weight), m_settings(settings), m_visitor(visitor),
       m_newton(cm, energy, solver, settings.newton), m_topology(cm, energy, halfedge_weight),
-      m_lambda(settings.lambda), m_guard(settings.bijective), m_deadline(settings.time_limit)
+      m_lambda(settings.lambda), m_guard(settings.bijective, &halfedge_weight), m_deadline(settings.time_limit)
   {
     m_timer.start();
   }

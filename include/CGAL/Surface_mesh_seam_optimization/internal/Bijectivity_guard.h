@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Split_self_overlapping_charts.h>
 
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
@@ -36,7 +37,9 @@ public:
     RESTARTED     // overlap: back to the initial map, scaffold on
   };
 
-  explicit Bijectivity_guard(bool bijective) : m_bijective(bijective) {}
+  // `halfedge_weight` (seam cost per unit length; null: 1) prices the cuts of split charts.
+  explicit Bijectivity_guard(bool bijective, const std::vector<double>* halfedge_weight = nullptr)
+    : m_bijective(bijective), m_weight(halfedge_weight) {}
 
   bool bijective() const { return m_bijective; }
   // bijective and the scaffold in use (after the lazy phase)
@@ -112,7 +115,7 @@ public:
     // couplingdown 12.0 against 23.1, elephant-with-holes 13.2 against 19.3,
     // whose initial maps are 90 and 245 times their stationary E_SD.)
     if(m_safe_is_initial && !m_restart_at_overlap && m_initial_e_sd > far_from_stationary * e_sd() &&
-       split_self_overlapping_charts(cm) > 0)
+       split_self_overlapping_charts(cm, m_weight) > 0)
     {
       lay_out_uv_components(cm);
       return SPLIT;
@@ -158,6 +161,7 @@ private:
   }
 
   bool m_bijective;
+  const std::vector<double>* m_weight;
   bool m_lazy = false; // bijective, but no scaffold yet
   Scaffold m_scaffold;
   double m_safe_lambda = 0;

@@ -27,11 +27,13 @@ namespace internal {
 
 // Counts overlapping pairs of the triangles `tri` (3 indices into `uv` per
 // triangle), stopping at `cap`. Degenerate triangles are skipped. The first
-// pair found goes to `first` (triangle indices), if given.
+// pair found goes to `first` (triangle indices), if given, and every pair
+// counted to `all`.
 inline std::size_t count_overlapping_pairs(const std::vector<int>& tri, const double* uv,
                                            std::size_t cap = std::size_t(-1),
                                            double relative_tolerance = 1e-9,
-                                           std::pair<int, int>* first = nullptr)
+                                           std::pair<int, int>* first = nullptr,
+                                           std::vector<std::pair<int, int> >* all = nullptr)
 {
   const std::size_t n = tri.size() / 3;
   struct Box { double x0, y0, x1, y1; };
@@ -128,6 +130,7 @@ inline std::size_t count_overlapping_pairs(const std::vector<int>& tri, const do
         if(cell((std::max)(bi.x0, bj.x0), (std::max)(bi.y0, bj.y0)) != entries[s].first) continue;
         if(separated(i, j) || separated(j, i)) continue;
         if(count == 0 && first) *first = std::make_pair(id[i], id[j]);
+        if(all) all->emplace_back(id[i], id[j]);
         if(++count >= cap) return count;
       }
     s = e;
