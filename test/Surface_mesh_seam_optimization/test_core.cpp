@@ -220,6 +220,31 @@ Cut_mesh bent_strip(double turns, int neck = -1, double neck_width = 0.5)
   return cm;
 }
 
+// How many charts of `cm` overlap themselves.
+std::size_t charts_overlapping_themselves(const Cut_mesh& cm)
+{
+  std::vector<int> chart;
+  const std::size_t n = cm.compute_charts(chart);
+  std::size_t overlapping = 0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    std::vector<int> tri;
+    for(std::size_t f = 0; f < chart.size(); ++f)
+      if(chart[f] == int(k)) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
+    if(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) > 0) ++overlapping;
+  }
+  return overlapping;
+}
+
+// The UV of every corner (2 per corner), whatever UV vertex it belongs to.
+std::vector<double> corner_uvs(const Cut_mesh& cm)
+{
+  std::vector<double> uv(2 * cm.corner_uv.size());
+  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
+    for(int d = 0; d < 2; ++d) uv[2*c + d] = cm.uv[2 * cm.corner_uv[c] + d];
+  return uv;
+}
+
 template <typename Mesh>
 Mesh read_mesh(const std::string& name)
 {
@@ -1497,23 +1522,14 @@ BOOST_AUTO_TEST_CASE(a_chart_that_overlaps_itself_is_cut_between_the_overlapping
   Cut_mesh cm = bent_strip(1.25);
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
   BOOST_REQUIRE(SMSO::internal::count_overlapping_pairs(cm) > 0);
-  std::vector<double> before(2 * cm.corner_uv.size());
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
-    for(int d = 0; d < 2; ++d) before[2*c + d] = cm.uv[2 * cm.corner_uv[c] + d];
+  const std::vector<double> before = corner_uvs(cm);
 
   BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 1u);
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
   std::vector<int> chart;
   BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
-  for(int k = 0; k < 2; ++k)
-  {
-    std::vector<int> tri;
-    for(std::size_t f = 0; f < chart.size(); ++f)
-      if(chart[f] == k) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
-    BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
-  }
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
-    for(int d = 0; d < 2; ++d) BOOST_TEST(cm.uv[2 * cm.corner_uv[c] + d] == before[2*c + d]);
+  BOOST_TEST(charts_overlapping_themselves(cm) == 0u);
+  BOOST_TEST(corner_uvs(cm) == before);
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_TEST(cm.signed_uv_area2(f) > 0);
   // one cut across the strip: the seam edges (each once) join the two long sides
   double seam = 0;
@@ -1546,13 +1562,7 @@ BOOST_AUTO_TEST_CASE(a_self_overlapping_chart_is_cut_where_its_overlapping_ends_
         BOOST_TEST(cm.points[3 * cm.corner_vertex[cm.prev(int(h))]] == x); // across the strip
       }
     BOOST_TEST(seams == 1);
-    for(int k = 0; k < 2; ++k)
-    {
-      std::vector<int> tri;
-      for(std::size_t f = 0; f < chart.size(); ++f)
-        if(chart[f] == k) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
-      BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
-    }
+    BOOST_TEST(charts_overlapping_themselves(cm) == 0u);
     return x;
   };
   Cut_mesh cm = bent_strip(1.25, 4, 0.1);
@@ -1574,24 +1584,15 @@ BOOST_AUTO_TEST_CASE(a_chart_overlapping_itself_all_along_is_cut_until_no_chart_
 {
   Cut_mesh cm = bent_strip(2.25);
   for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_REQUIRE(cm.signed_uv_area2(f) > 0);
-  std::vector<double> before(2 * cm.corner_uv.size());
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
-    for(int d = 0; d < 2; ++d) before[2*c + d] = cm.uv[2 * cm.corner_uv[c] + d];
+  const std::vector<double> before = corner_uvs(cm);
   const std::size_t cuts = SMSO::internal::split_self_overlapping_charts(cm);
   BOOST_TEST(cuts >= 2u); // one cut leaves a piece longer than a turn
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
   std::vector<int> chart;
   const std::size_t n = cm.compute_charts(chart);
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    std::vector<int> tri;
-    for(std::size_t f = 0; f < chart.size(); ++f)
-      if(chart[f] == int(k)) for(int i = 0; i < 3; ++i) tri.push_back(cm.corner_uv[3*f + i]);
-    BOOST_TEST(SMSO::internal::count_overlapping_pairs(tri, cm.uv.data()) == 0u);
-  }
+  BOOST_TEST(charts_overlapping_themselves(cm) == 0u);
   BOOST_TEST(n == cuts + 1); // each cut splits one chart in two
-  for(std::size_t c = 0; c < cm.corner_uv.size(); ++c)
-    for(int d = 0; d < 2; ++d) BOOST_TEST(cm.uv[2 * cm.corner_uv[c] + d] == before[2*c + d]);
+  BOOST_TEST(corner_uvs(cm) == before);
   BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
 }
 

@@ -38,7 +38,7 @@ public:
   };
 
   // `halfedge_weight` (seam cost per unit length; null: 1) prices the cuts of split charts.
-  explicit Bijectivity_guard(bool bijective, const std::vector<double>* halfedge_weight = nullptr)
+  Bijectivity_guard(bool bijective, const std::vector<double>* halfedge_weight)
     : m_bijective(bijective), m_weight(halfedge_weight) {}
 
   bool bijective() const { return m_bijective; }

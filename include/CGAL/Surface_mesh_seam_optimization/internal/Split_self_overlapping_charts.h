@@ -218,8 +218,9 @@ inline std::size_t cut_self_overlapping_charts_once(Cut_mesh& cm, const std::vec
 
 // Cuts the charts until none overlaps itself (each cut between the layers
 // that overlap most); returns the number of cuts. All at once, not one cut
-// per descent: b9_mesh 9.47 (8 rounds of descent), femur 14.67 (6), against
-// 9.45 (21) and 15.71 (10), and 15.06 and 14.40 by geodesic Voronoi cells.
+// per descent: b9_mesh 9.47 (8 splits over both starts), femur 14.67 (6),
+// against 9.45 (21) and 15.71 (10), and 15.06 and 14.40 by geodesic Voronoi
+// cells.
 inline std::size_t split_self_overlapping_charts(Cut_mesh& cm, const std::vector<double>* halfedge_weight = nullptr)
 {
   std::size_t cuts = 0;
