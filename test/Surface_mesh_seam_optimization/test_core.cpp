@@ -5,6 +5,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -101,9 +102,21 @@ struct Grid_cut
 {
   SMSO::internal::Cut_mesh cm;
 
-  Grid_cut()
+  // (with `hole`, the faces around the vertex (7,7) are removed: a second boundary loop)
+  explicit Grid_cut(bool hole = false)
   {
-    const Surface_mesh sm = planar_grid(9, 1, 0.);
+    Surface_mesh sm = planar_grid(9, 1, 0.);
+    if(hole)
+    {
+      for(auto v : vertices(sm))
+        if(sm.point(v) == Point_3(7, 7, 0))
+        {
+          const auto h = CGAL::Euler::remove_center_vertex(halfedge(v, sm), sm);
+          CGAL::Euler::make_hole(h, sm);
+          break;
+        }
+      sm.collect_garbage();
+    }
     SMSO::internal::Face_graph_copy<Surface_mesh> copy;
     std::string msg;
     BOOST_REQUIRE(SMSO::internal::copy_face_graph(sm, get(CGAL::vertex_point, sm), cm, copy, msg) == SMSO::OK);
@@ -113,6 +126,18 @@ struct Grid_cut
     for(std::size_t v = 0; v < cm.number_of_vertices(); ++v)
       if(cm.points[3*v] == i && cm.points[3*v+1] == j) return int(v);
     return -1;
+  }
+  // seams on the edges between the given vertex ids
+  void cut_edges(const std::vector<std::pair<int, int> >& edges)
+  {
+    std::vector<char> seam(cm.corner_vertex.size(), 0);
+    for(std::size_t h = 0; h < seam.size(); ++h)
+      for(const auto& e : edges)
+      {
+        const int s = cm.corner_vertex[SMSO::internal::Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
+        if((s == e.first && t == e.second) || (s == e.second && t == e.first)) seam[h] = 1;
+      }
+    SMSO::internal::label_uv_vertices(cm, seam);
   }
   void cut_along(const std::vector<std::pair<int, int> >& path)
   {
@@ -1353,19 +1378,8 @@ BOOST_AUTO_TEST_CASE(reroute_seam_slides_a_seam_end_along_the_boundary)
   SMSO::internal::Cut_mesh& cm = grid.cm;
   auto id = [&](int i, int j) { return grid.id(i, j); };
   // (a tree: cut_along() takes one path)
-  {
-    std::vector<char> seam(cm.corner_vertex.size(), 0);
-    const std::vector<std::pair<int, int> > edges = { { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) },
-      { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) }, { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) },
-      { id(6, 3), id(6, 4) } };
-    for(std::size_t h = 0; h < seam.size(); ++h)
-      for(const auto& e : edges)
-      {
-        const int s = cm.corner_vertex[Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
-        if((s == e.first && t == e.second) || (s == e.second && t == e.first)) seam[h] = 1;
-      }
-    SMSO::internal::label_uv_vertices(cm, seam);
-  }
+  grid.cut_edges({ { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) }, { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) },
+                   { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) }, { id(6, 3), id(6, 4) } });
   std::vector<int> chart;
   BOOST_REQUIRE(cm.compute_charts(chart) == 1u);
   for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
@@ -1429,6 +1443,108 @@ BOOST_AUTO_TEST_CASE(reroute_seam_slides_a_seam_end_along_the_boundary)
   before.restore(cm);
   BOOST_TEST(std::abs(cm.seam_length() - (4 + 3 * std::sqrt(2.))) < 1e-12);
   BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+}
+
+// The straightening round's choice: the largest saving first, and where a
+// detour cannot be replaced, the next one (not the end of the round).
+BOOST_AUTO_TEST_CASE(replace_largest_detour_goes_on_where_a_detour_cannot_be_replaced)
+{
+  using SMSO::internal::Seam_detour;
+  // savings 0.5, 2, 0.005, 1, 2; the ends are (index, index)
+  std::vector<Seam_detour> detours(5);
+  const double savings[] = { 0.5, 2., 0.005, 1., 2. };
+  for(int i = 0; i < 5; ++i)
+  {
+    detours[i].seam.assign(1, i);
+    detours[i].seam_cost = 3.;
+    detours[i].shortcut_cost = 3. - savings[i];
+  }
+  auto ends = [](const Seam_detour& d) { return std::make_pair(d.seam.front(), d.seam.front()); };
+  std::vector<int> attempted;
+  std::set<int> replaceable = { 3, 0 };
+  auto attempt = [&](const Seam_detour& d, bool& applied) {
+    attempted.push_back(d.seam.front());
+    applied = replaceable.count(d.seam.front()) > 0;
+    return SMSO::OK;
+  };
+  std::vector<std::pair<int, int> > tried;
+  bool applied = false;
+  BOOST_TEST(SMSO::internal::replace_largest_detour(detours, 0.01, tried, ends, attempt, applied) == SMSO::OK);
+  BOOST_TEST(applied);
+  // 1 and 4 (saving 2, in the order found) cannot be replaced; 3 (saving 1) is
+  BOOST_TEST((attempted == std::vector<int>{ 1, 4, 3 }));
+  BOOST_TEST(tried.size() == 3u);
+  // from there, the ones tried are skipped; 2 saves less than 0.01
+  attempted.clear();
+  BOOST_TEST(SMSO::internal::replace_largest_detour(detours, 0.01, tried, ends, attempt, applied) == SMSO::OK);
+  BOOST_TEST(applied);
+  BOOST_TEST((attempted == std::vector<int>{ 0 }));
+  attempted.clear();
+  BOOST_TEST(SMSO::internal::replace_largest_detour(detours, 0.01, tried, ends, attempt, applied) == SMSO::OK);
+  BOOST_TEST(!applied);
+  BOOST_TEST(attempted.empty());
+  // an error ends the round at once
+  tried.clear();
+  attempted.clear();
+  auto failing = [&](const Seam_detour& d, bool& done) {
+    attempted.push_back(d.seam.front());
+    done = false;
+    return SMSO::ERROR_LINEAR_SOLVER;
+  };
+  BOOST_TEST(SMSO::internal::replace_largest_detour(detours, 0.01, tried, ends, failing, applied) ==
+             SMSO::ERROR_LINEAR_SOLVER);
+  BOOST_TEST((attempted == std::vector<int>{ 1 }));
+}
+
+// The same seam tree with a hole around (7,7): from (7,5) the hole's border
+// (7,6) is nearer (1) than the outer border's (9,5) (2), but a path to
+// another boundary loop bounds no region with the part (reroute_seam()
+// refuses it) and would join the two loops: the slide stays on the outer
+// border, and is applied as without the hole.
+BOOST_AUTO_TEST_CASE(border_slides_stay_on_the_boundary_loop_of_the_seam_end)
+{
+  Grid_cut grid(true);
+  SMSO::internal::Cut_mesh& cm = grid.cm;
+  auto id = [&](int i, int j) { return grid.id(i, j); };
+  BOOST_REQUIRE(id(7, 7) < 0);
+  grid.cut_edges({ { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) }, { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) },
+                   { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) }, { id(6, 3), id(6, 4) } });
+  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+  {
+    const double* p = &cm.points[3 * cm.corner_vertex[c]];
+    cm.uv[2 * cm.corner_uv[c]] = p[0];
+    cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
+  }
+  const auto length = [&](int h) { return cm.edge_length(h); };
+  const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
+  const auto target = [&](int h) { return cm.corner_vertex[h]; };
+
+  const SMSO::internal::Seam_graph g(cm);
+  BOOST_TEST(g.on_border[id(7, 6)]);
+  BOOST_TEST(g.on_border[id(9, 5)]);
+  BOOST_TEST(g.border_loop[id(7, 6)] == g.border_loop[id(6, 6)]);
+  BOOST_TEST(g.border_loop[id(9, 5)] == g.border_loop[id(9, 7)]);
+  BOOST_TEST(g.border_loop[id(7, 6)] != g.border_loop[id(9, 7)]);
+  SMSO::internal::Uncut_paths paths(cm.number_of_vertices());
+  paths.run(g, length, id(7, 5), 10.);
+  BOOST_TEST(paths.dist[id(7, 6)] == 1.);
+  BOOST_TEST(paths.dist[id(9, 5)] == 2.);
+
+  const auto reroutes = SMSO::internal::seam_reroutes(cm, length, 1.1);
+  BOOST_REQUIRE(reroutes.size() == 1u);
+  const auto& d = reroutes.front();
+  BOOST_TEST(d.to_border);
+  BOOST_TEST(source(d.seam.front()) == id(7, 5));
+  BOOST_TEST(target(d.seam.back()) == id(9, 7));
+  BOOST_TEST(target(d.shortcut.back()) == id(9, 5));
+  BOOST_TEST(std::abs(d.shortcut_cost - 2) < 1e-12);
+
+  SMSO::internal::Uv_snapshot before;
+  BOOST_REQUIRE(SMSO::internal::reroute_seam(cm, SMSO::internal::Vertex_corners(cm), d, before));
+  BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+  BOOST_TEST(std::abs(cm.seam_length() - (4 + std::sqrt(2.) + 2)) < 1e-12);
+  std::vector<int> chart;
+  BOOST_TEST(cm.compute_charts(chart) == 1u);
 }
 
 

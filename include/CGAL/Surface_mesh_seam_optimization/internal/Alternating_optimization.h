@@ -182,12 +182,12 @@ private:
   // A perturbation of the result: the largest detour of a leaf seam path
   // not yet tried from this result is replaced by its shortcut (cut, then
   // the detour zipped from its tip; or zipped first where the shortcut
-  // cannot be opened yet), and the alternation goes on from there.
-  // `applied` is false if there was no such detour or nothing could be done
-  // (nothing changed then).
+  // cannot be opened yet), and the alternation goes on from there; where it
+  // cannot be replaced, the next largest (replace_largest_detour()).
+  // `applied` is false if there was no such detour or none could be replaced
+  // (the seams did not change then).
   Error_code straighten(bool& applied)
   {
-    applied = false;
     // (with a scaffold, a shortcut starts beside the junction: a junction's
     // wedges are narrow, and splits there overlap)
     std::vector<Seam_detour> detours = seam_detours(
@@ -198,19 +198,17 @@ private:
     auto ends = [this](const Seam_detour& d) {
       return std::make_pair(m_cm.corner_vertex[Cut_mesh::prev(d.seam.front())], m_cm.corner_vertex[d.seam.back()]);
     };
-    const double min_saving = m_settings.detour_min_saving * seam_cost();
-    const Seam_detour* best = nullptr;
-    for(const Seam_detour& d : detours)
-    {
-      const double saving = d.seam_cost - d.shortcut_cost;
-      if(saving >= min_saving && (!best || saving > best->seam_cost - best->shortcut_cost) &&
-         std::find(m_straightened.begin(), m_straightened.end(), ends(d)) == m_straightened.end())
-        best = &d;
-    }
-    if(!best) return OK;
-    m_straightened.push_back(ends(*best));
-    if(best->reroute) return reroute(*best, applied);
-    const std::vector<int>& cut = best->shortcut;
+    return replace_largest_detour(detours, m_settings.detour_min_saving * seam_cost(), m_straightened, ends,
+                                  [this](const Seam_detour& d, bool& done) {
+                                    return d.reroute ? reroute(d, done) : replace_detour(d, done);
+                                  }, applied);
+  }
+
+  // Cuts the shortcut of a leaf detour and zips the detour, then alternates
+  // again from there; `applied` is false if nothing could be done.
+  Error_code replace_detour(const Seam_detour& d, bool& applied)
+  {
+    const std::vector<int>& cut = d.shortcut;
     std::size_t cuts = 0, zips = 0;
     {
       // one pattern analysis for the whole batch of operations
@@ -219,7 +217,7 @@ private:
       if(split_along(cut[0]))
         // the shortcut but its last edge, whose end is still on the detour
         for(cuts = 1; cuts + 1 < cut.size() && split_along(cut[cuts]); ++cuts) {}
-      const Error_code status = zip(best->seam, zips);
+      const Error_code status = zip(d.seam, zips);
       if(status != OK) return status;
       for(; cuts < cut.size() && split_along(cut[cuts]); ++cuts) {}
     }

@@ -12,7 +12,9 @@
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_SEAM_PATHS_H
 
+#include <CGAL/Surface_mesh_seam_optimization/Error_code.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Union_find.h>
 
 #include <algorithm>
 #include <functional>
@@ -41,18 +43,28 @@ struct Seam_graph
   std::vector<int> offset, out;  // outgoing interior halfedges of each vertex
   std::vector<int> seam_degree;
   std::vector<char> on_border;   // on the input boundary
+  std::vector<int> border_loop;  // of a vertex on the input boundary: a representative vertex of its loop
 
   explicit Seam_graph(const Cut_mesh& mesh)
     : cm(mesh), offset(mesh.number_of_vertices() + 1, 0), out(mesh.corner_vertex.size()),
-      seam_degree(mesh.number_of_vertices(), 0), on_border(mesh.number_of_vertices(), 0)
+      seam_degree(mesh.number_of_vertices(), 0), on_border(mesh.number_of_vertices(), 0),
+      border_loop(mesh.number_of_vertices(), -1)
   {
     const int nv = int(cm.number_of_vertices()), nh = int(cm.corner_vertex.size());
+    Union_find loops(nv);
     for(int h = 0; h < nh; ++h)
     {
-      if(cm.opposite[h] < 0) { on_border[source(h)] = on_border[target(h)] = 1; continue; }
+      if(cm.opposite[h] < 0)
+      {
+        on_border[source(h)] = on_border[target(h)] = 1;
+        loops.unite(source(h), target(h));
+        continue;
+      }
       ++offset[source(h) + 1];
       if(cm.is_seam(h)) ++seam_degree[source(h)];
     }
+    for(int v = 0; v < nv; ++v)
+      if(on_border[v]) border_loop[v] = loops.find(v);
     for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
     std::vector<int> fill(offset.begin(), offset.end() - 1);
     for(int h = 0; h < nh; ++h)
@@ -182,8 +194,10 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
 // Where a seam path from a junction or a tip ends on the input boundary (and
 // nothing else does there), that end is free to move along the boundary: the part from one of the
 // path's inner vertices to it, against the cheapest path from that vertex to
-// another boundary vertex on no seam, if at least `min_ratio` times cheaper
-// (the best saving).
+// another vertex on no seam of the same boundary loop, if at least
+// `min_ratio` times cheaper (the best saving). (A path to another loop is no
+// slide: it bounds no region with the part, and would change which loops the
+// cut joins.)
 template <typename Cost>
 void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, const std::vector<int>& path,
                    Uncut_paths& paths, std::vector<Seam_detour>& out)
@@ -213,7 +227,8 @@ void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, cons
       for(int w : paths.touched)
       {
         const double dw = paths.dist[w];
-        if(w == end || !g.on_border[w] || g.seam_degree[w] != 0 || !(dw * min_ratio <= along) || !(along - dw > saving))
+        if(w == end || !g.on_border[w] || g.border_loop[w] != g.border_loop[end] || g.seam_degree[w] != 0 ||
+           !(dw * min_ratio <= along) || !(along - dw > saving))
           continue;
         saving = along - dw;
         best_i = i;
@@ -305,6 +320,35 @@ std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, dou
     }
   }
   return reroutes;
+}
+
+// Replaces one detour by its shortcut: `attempt(d, applied)` on the detours
+// that save at least `min_saving`, largest saving first (among equal
+// savings, the first found), skipping those whose ends (`ends(d)`, a pair)
+// are in `tried` and adding the ends of each attempted one, until one is
+// applied or an attempt returns an error. A detour that cannot be replaced
+// (its result would overlap, say) changes nothing, so the next is tried.
+template <typename Ends, typename Attempt>
+Error_code replace_largest_detour(const std::vector<Seam_detour>& detours, double min_saving,
+                                  std::vector<std::pair<int, int> >& tried, const Ends& ends,
+                                  const Attempt& attempt, bool& applied)
+{
+  applied = false;
+  std::vector<const Seam_detour*> order;
+  for(const Seam_detour& d : detours)
+    if(d.seam_cost - d.shortcut_cost >= min_saving) order.push_back(&d);
+  std::stable_sort(order.begin(), order.end(), [](const Seam_detour* a, const Seam_detour* b) {
+    return a->seam_cost - a->shortcut_cost > b->seam_cost - b->shortcut_cost;
+  });
+  for(const Seam_detour* d : order)
+  {
+    const std::pair<int, int> e = ends(*d);
+    if(std::find(tried.begin(), tried.end(), e) != tried.end()) continue;
+    tried.push_back(e);
+    const Error_code status = attempt(*d, applied);
+    if(status != OK || applied) return status;
+  }
+  return OK;
 }
 
 } // namespace internal
