@@ -139,6 +139,24 @@ struct Grid_cut
       }
     SMSO::internal::label_uv_vertices(cm, seam);
   }
+  // the seam tree of the border-slide tests: tips at (4,4) and (6,2), a
+  // junction at (6,4), from there on diagonals to the border at (9,7)
+  // (a tree: cut_along() takes one path)
+  void cut_slide_tree()
+  {
+    cut_edges({ { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) }, { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) },
+                { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) }, { id(6, 3), id(6, 4) } });
+  }
+  // every corner's UV is its vertex's (x, y): isometric, seams closed
+  void map_as_in_3d()
+  {
+    for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
+    {
+      const double* p = &cm.points[3 * cm.corner_vertex[c]];
+      cm.uv[2 * cm.corner_uv[c]] = p[0];
+      cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
+    }
+  }
   void cut_along(const std::vector<std::pair<int, int> >& path)
   {
     std::vector<char> seam(cm.corner_vertex.size(), 0);
@@ -1377,17 +1395,10 @@ BOOST_AUTO_TEST_CASE(reroute_seam_slides_a_seam_end_along_the_boundary)
   Grid_cut grid;
   SMSO::internal::Cut_mesh& cm = grid.cm;
   auto id = [&](int i, int j) { return grid.id(i, j); };
-  // (a tree: cut_along() takes one path)
-  grid.cut_edges({ { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) }, { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) },
-                   { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) }, { id(6, 3), id(6, 4) } });
+  grid.cut_slide_tree();
   std::vector<int> chart;
   BOOST_REQUIRE(cm.compute_charts(chart) == 1u);
-  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
-  {
-    const double* p = &cm.points[3 * cm.corner_vertex[c]];
-    cm.uv[2 * cm.corner_uv[c]] = p[0];
-    cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
-  }
+  grid.map_as_in_3d();
   const auto length = [&](int h) { return cm.edge_length(h); };
   const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
   const auto target = [&](int h) { return cm.corner_vertex[h]; };
@@ -1507,14 +1518,8 @@ BOOST_AUTO_TEST_CASE(border_slides_stay_on_the_boundary_loop_of_the_seam_end)
   SMSO::internal::Cut_mesh& cm = grid.cm;
   auto id = [&](int i, int j) { return grid.id(i, j); };
   BOOST_REQUIRE(id(7, 7) < 0);
-  grid.cut_edges({ { id(4, 4), id(5, 4) }, { id(5, 4), id(6, 4) }, { id(6, 4), id(7, 5) }, { id(7, 5), id(8, 6) },
-                   { id(8, 6), id(9, 7) }, { id(6, 2), id(6, 3) }, { id(6, 3), id(6, 4) } });
-  for(std::size_t c = 0; c < cm.corner_vertex.size(); ++c)
-  {
-    const double* p = &cm.points[3 * cm.corner_vertex[c]];
-    cm.uv[2 * cm.corner_uv[c]] = p[0];
-    cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
-  }
+  grid.cut_slide_tree();
+  grid.map_as_in_3d();
   const auto length = [&](int h) { return cm.edge_length(h); };
   const auto source = [&](int h) { return cm.corner_vertex[Cut_mesh::prev(h)]; };
   const auto target = [&](int h) { return cm.corner_vertex[h]; };
