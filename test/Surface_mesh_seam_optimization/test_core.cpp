@@ -157,19 +157,13 @@ struct Grid_cut
       cm.uv[2 * cm.corner_uv[c] + 1] = p[1];
     }
   }
+  // seams along a path of grid points
   void cut_along(const std::vector<std::pair<int, int> >& path)
   {
-    std::vector<char> seam(cm.corner_vertex.size(), 0);
+    std::vector<std::pair<int, int> > edges;
     for(std::size_t k = 0; k + 1 < path.size(); ++k)
-    {
-      const int a = id(path[k].first, path[k].second), b = id(path[k+1].first, path[k+1].second);
-      for(std::size_t h = 0; h < seam.size(); ++h)
-      {
-        const int s = cm.corner_vertex[SMSO::internal::Cut_mesh::prev(int(h))], t = cm.corner_vertex[h];
-        if((s == a && t == b) || (s == b && t == a)) seam[h] = 1;
-      }
-    }
-    SMSO::internal::label_uv_vertices(cm, seam);
+      edges.emplace_back(id(path[k].first, path[k].second), id(path[k+1].first, path[k+1].second));
+    cut_edges(edges);
   }
 };
 
@@ -1525,8 +1519,8 @@ BOOST_AUTO_TEST_CASE(border_slides_stay_on_the_boundary_loop_of_the_seam_end)
   const auto target = [&](int h) { return cm.corner_vertex[h]; };
 
   const SMSO::internal::Seam_graph g(cm);
-  BOOST_TEST(g.on_border[id(7, 6)]);
-  BOOST_TEST(g.on_border[id(9, 5)]);
+  BOOST_TEST(g.on_border(id(7, 6)));
+  BOOST_TEST(g.on_border(id(9, 5)));
   BOOST_TEST(g.border_loop[id(7, 6)] == g.border_loop[id(6, 6)]);
   BOOST_TEST(g.border_loop[id(9, 5)] == g.border_loop[id(9, 7)]);
   BOOST_TEST(g.border_loop[id(7, 6)] != g.border_loop[id(9, 7)]);

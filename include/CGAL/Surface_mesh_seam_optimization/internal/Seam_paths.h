@@ -42,13 +42,11 @@ struct Seam_graph
   const Cut_mesh& cm;
   std::vector<int> offset, out;  // outgoing interior halfedges of each vertex
   std::vector<int> seam_degree;
-  std::vector<char> on_border;   // on the input boundary
-  std::vector<int> border_loop;  // of a vertex on the input boundary: a representative vertex of its loop
+  std::vector<int> border_loop;  // a representative vertex of the input boundary loop through each vertex, or -1
 
   explicit Seam_graph(const Cut_mesh& mesh)
     : cm(mesh), offset(mesh.number_of_vertices() + 1, 0), out(mesh.corner_vertex.size()),
-      seam_degree(mesh.number_of_vertices(), 0), on_border(mesh.number_of_vertices(), 0),
-      border_loop(mesh.number_of_vertices(), -1)
+      seam_degree(mesh.number_of_vertices(), 0), border_loop(mesh.number_of_vertices(), -1)
   {
     const int nv = int(cm.number_of_vertices()), nh = int(cm.corner_vertex.size());
     Union_find loops(nv);
@@ -56,7 +54,7 @@ struct Seam_graph
     {
       if(cm.opposite[h] < 0)
       {
-        on_border[source(h)] = on_border[target(h)] = 1;
+        border_loop[source(h)] = border_loop[target(h)] = 0; // (on the boundary; its loop below)
         loops.unite(source(h), target(h));
         continue;
       }
@@ -64,13 +62,14 @@ struct Seam_graph
       if(cm.is_seam(h)) ++seam_degree[source(h)];
     }
     for(int v = 0; v < nv; ++v)
-      if(on_border[v]) border_loop[v] = loops.find(v);
+      if(border_loop[v] >= 0) border_loop[v] = loops.find(v);
     for(int v = 0; v < nv; ++v) offset[v + 1] += offset[v];
     std::vector<int> fill(offset.begin(), offset.end() - 1);
     for(int h = 0; h < nh; ++h)
       if(cm.opposite[h] >= 0) out[fill[source(h)]++] = h;
   }
 
+  bool on_border(int v) const { return border_loop[v] >= 0; } // on the input boundary
   int source(int h) const { return cm.corner_vertex[Cut_mesh::prev(h)]; }
   int target(int h) const { return cm.corner_vertex[h]; }
   // the seam halfedge out of v that does not lead back to `from`, or -1
@@ -106,7 +105,7 @@ struct Uncut_paths
     {
       const Item item = queue.top(); queue.pop();
       const int u = item.first > dist[item.second] ? -1 : item.second;
-      if(u < 0 || (u != start && (g.seam_degree[u] != 0 || g.on_border[u]))) continue;
+      if(u < 0 || (u != start && (g.seam_degree[u] != 0 || g.on_border(u)))) continue;
       for(int k = g.offset[u]; k < g.offset[u + 1]; ++k)
       {
         const int h = g.out[k], w = g.target(h);
@@ -144,7 +143,7 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
   Uncut_paths paths(nv);
   for(int tip = 0; tip < nv; ++tip)
   {
-    if(g.seam_degree[tip] != 1 || g.on_border[tip]) continue;
+    if(g.seam_degree[tip] != 1 || g.on_border(tip)) continue;
     // walk from the tip to the first vertex that is not a plain seam vertex
     std::vector<int> walk;      // halfedges, each towards the tip
     std::vector<double> length; // seam cost from the tip to the source of walk[i]
@@ -159,7 +158,7 @@ std::vector<Seam_detour> seam_detours(const Cut_mesh& cm, const Cost& cost, doub
       length.push_back(l);
       from = v;
       v = g.target(next);
-      if(g.seam_degree[v] != 2 || g.on_border[v] || v == tip) break;
+      if(g.seam_degree[v] != 2 || g.on_border(v) || v == tip) break;
     }
     if(walk.size() < 2 || v == tip) continue;
 
@@ -207,7 +206,7 @@ void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, cons
     const int end = direction == 0 ? g.target(path.back()) : g.source(path.front());
     const int other = direction == 0 ? g.source(path.front()) : g.target(path.back());
     // (a path from boundary to boundary divides charts: its ends stay)
-    if(!g.on_border[end] || g.on_border[other] || g.seam_degree[end] != 1 || path.size() < 2) continue;
+    if(!g.on_border(end) || g.on_border(other) || g.seam_degree[end] != 1 || path.size() < 2) continue;
     std::vector<int> p(path); // towards `end`
     if(direction == 1)
     {
@@ -227,7 +226,8 @@ void border_slides(const Seam_graph& g, const Cost& cost, double min_ratio, cons
       for(int w : paths.touched)
       {
         const double dw = paths.dist[w];
-        if(w == end || !g.on_border[w] || g.border_loop[w] != g.border_loop[end] || g.seam_degree[w] != 0 ||
+        // (on the loop of `end`, so on the boundary)
+        if(w == end || g.border_loop[w] != g.border_loop[end] || g.seam_degree[w] != 0 ||
            !(dw * min_ratio <= along) || !(along - dw > saving))
           continue;
         saving = along - dw;
@@ -261,8 +261,8 @@ std::vector<Seam_detour> seam_reroutes(const Cut_mesh& cm, const Cost& cost, dou
 {
   const Seam_graph g(cm);
   const int nh = int(cm.corner_vertex.size());
-  auto plain = [&](int v) { return g.seam_degree[v] == 2 && !g.on_border[v]; };
-  auto tip = [&](int v) { return g.seam_degree[v] == 1 && !g.on_border[v]; };
+  auto plain = [&](int v) { return g.seam_degree[v] == 2 && !g.on_border(v); };
+  auto tip = [&](int v) { return g.seam_degree[v] == 1 && !g.on_border(v); };
 
   std::vector<Seam_detour> reroutes;
   std::vector<char> walked(nh, 0);
