@@ -797,6 +797,19 @@ BOOST_AUTO_TEST_CASE(the_hessian_pattern_and_the_permuted_factorization)
     const Eigen::SparseMatrix<double> full = A.selfadjointView<Eigen::Lower>();
     BOOST_TEST((full * xt - b).norm() <= 1e-10 * b.norm());
   }
+
+  // a new pattern (a leading block: other elimination tree and row patterns)
+  // analysed by the same traits: again Eigen's factors to the last bit
+  const int m = n - 7;
+  const Eigen::SparseMatrix<double> B = A.topLeftCorner(m, m);
+  eigen.compute(B);
+  BOOST_REQUIRE(eigen.info() == Eigen::Success);
+  BOOST_REQUIRE(traits.analyze_pattern(B));
+  BOOST_REQUIRE(traits.factorize(B));
+  Eigen::VectorXd xt;
+  BOOST_REQUIRE(traits.solve(b.head(m), xt));
+  const Eigen::VectorXd xe = eigen.solve(b.head(m));
+  BOOST_TEST((xt.array() == xe.array()).all());
 }
 
 BOOST_AUTO_TEST_CASE(conjugate_gradients_with_a_stale_factor_reach_the_new_newton_step)

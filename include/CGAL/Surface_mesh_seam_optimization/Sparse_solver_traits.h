@@ -112,9 +112,9 @@ public:
   {
     const int n = int(A.cols());
     {
-      const Matrix full = A.selfadjointView<Eigen::Lower>();
+      // (the self-adjoint overload: the general one makes A + A^T of the full matrix, the same pattern)
       Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
-      Eigen::AMDOrdering<int>()(full, inverse);
+      Eigen::AMDOrdering<int>()(A.selfadjointView<Eigen::Lower>(), inverse);
       m->perm.resize(n);
       for(int k = 0; k < n; ++k) m->perm[inverse.indices()[k]] = k;
     }
@@ -144,7 +144,7 @@ public:
         U.innerIndexPtr()[slot] = (std::min)(ip, jp);
         m->slot[std::size_t(k)] = slot;
       }
-    m->ldlt.analyzePattern(U);
+    m->ldlt.analyze_preordered(U);
     return m->ldlt.info() == Eigen::Success;
   }
   /// numeric factorization of a matrix with the analysed pattern
@@ -178,10 +178,18 @@ private:
     return m->compressed;
   }
 
+  // SimplicialLDLT's analyzePattern() copies the matrix twice when the
+  // ordering is NaturalOrdering<int> (it tests for NaturalOrdering<Index>);
+  // the given matrix is the permuted one, so only the elimination tree is due.
+  struct Preordered_ldlt : Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int> >
+  {
+    void analyze_preordered(const Matrix& U) { this->analyzePattern_preordered(U, true); }
+  };
+
   struct Data
   {
     Matrix compressed; // a copy of an uncompressed input
-    Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int> > ldlt;
+    Preordered_ldlt ldlt;
     std::vector<int> perm, slot; // new index of each unknown; entry of A -> entry of the permuted matrix
     Matrix permuted;
     Vector rhs, solution;
