@@ -256,13 +256,15 @@ inline void print_help(std::ostream& os)
      << "                          shorter seams; 0 for the first result alone (faster);\n"
      << "                          not with --seam-weight or --keep-seams\n"
      << "                          (default: " << default_recut_rounds << ")\n"
-     << "  --starts N              1, 2 or 3: with 2, a second start whose dual step holds the\n"
+     << "  --starts N              1, 2, 3 or 4: with 2, a second start whose dual step holds the\n"
      << "                          price of distortion while a cut pays runs beside the first\n"
      << "                          (in parallel), and the shorter seams that meet the bound\n"
      << "                          are kept; 1 for the first alone (half the work); 3 adds a\n"
      << "                          start that cuts without the scaffold first, then goes on\n"
      << "                          with it from those seams (about 1.5 times the work, shorter\n"
-     << "                          seams where parts of the mesh touch in UV); not with\n"
+     << "                          seams where parts of the mesh touch in UV); 4 adds one\n"
+     << "                          from a first straight cut (from the point of largest\n"
+     << "                          distortion to the border); not with\n"
      << "                          --seam-weight or --keep-seams (default: " << default_starts << ")\n"
      << "  --proxy-faces N         a mesh of more than 2N faces: seams and map optimized first\n"
      << "                          on a proxy of about N faces (the mesh simplified), then\n"
@@ -562,7 +564,7 @@ inline Parse_status parse_options(int argc, char* argv[], Options& options, std:
     }
     else if(key == "--starts")
     {
-      if(!number(options.starts, [](std::size_t n) { return n >= 1 && n <= 3; }, "1, 2 or 3", &options.has_starts))
+      if(!number(options.starts, [](std::size_t n) { return n >= 1 && n <= 4; }, "1, 2, 3 or 4", &options.has_starts))
         return Parse_status::ERROR;
     }
     else if(key == "--proxy-faces")

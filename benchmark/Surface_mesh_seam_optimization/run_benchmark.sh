@@ -13,7 +13,7 @@
 #                  symbolic analysis, line search, topology queries, scaffold), on the
 #                  --quick meshes or those given; every report has this table too
 #   --starts N     number_of_starts(N) (default 2; 3 adds the start without the
-#                  scaffold first)
+#                  scaffold first, 4 also the one from a first straight cut)
 #   --no-bijectivity  bijective(false): no scaffold, charts may overlap (the
 #                  reference's non-bijective figures are then the yardstick)
 #   (default)      every mesh of reference_optcuts.csv

@@ -251,7 +251,7 @@ static int usage(const char* argv0)
                "  --out-dir DIR       write DIR/<name>.obj with UVs (default: current directory)\n"
                "  --max-iterations N  cap on Newton iterations (default 100000)\n"
                "  --recut-rounds N    number_of_recut_rounds(N) (default 6; 0: none)\n"
-               "  --starts N          number_of_starts(N): 1, 2 (default) or 3\n"
+               "  --starts N          number_of_starts(N): 1, 2 (default), 3 or 4\n"
                "  --proxy-faces N     proxy_number_of_faces(N): seams of meshes above 2N faces first on a proxy\n"
                "  --time-limit S      cancel optimize_seams() past S seconds (status WARNING_CANCELLED)\n"
                "  --distortion-only   minimize_distortion() with the initial seams instead of optimize_seams()\n"

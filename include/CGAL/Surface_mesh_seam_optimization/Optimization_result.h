@@ -77,7 +77,8 @@ struct Optimization_result
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
   /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts' dual
   /// step), 1 the second, 2 the third (seams without the scaffold first; its iterations, operations and
-  /// scaffold rebuilds count both phases); the other figures are those of that start
+  /// scaffold rebuilds count both phases), 3 the fourth (from a first straight cut); the other figures are
+  /// those of that start
   std::size_t start = 0;
   /// faces of the simplified proxy the seams were optimized on before the mesh
   /// itself (`proxy_number_of_faces`), 0 if none; the iterations and operations count both

@@ -79,10 +79,10 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
 
   const int starts = choose_parameter(get_parameter(np, internal_np::number_of_starts),
                                      internal::default_number_of_starts);
-  if(starts < 1 || starts > 3)
+  if(starts < 1 || starts > 4)
   {
     result.status = ERROR_WRONG_PARAMETER;
-    result.message = "number_of_starts must be 1, 2 or 3";
+    result.message = "number_of_starts must be 1, 2, 3 or 4";
     return result;
   }
 
@@ -141,6 +141,35 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
                                                        Solver())));
     });
   }
+  // Bound mode, a fourth start: EBCuts' first cut (the shortest path from
+  // the vertex of largest distortion of the map minimized with the initial
+  // seams to the nearest seam or border), then one start from the default
+  // initial map of those seams. The greedy growth from the uncut map can
+  // wind its seams (torusOnPlane: a helix over the tube, 1.2 times the
+  // paper's code's seams; from a straight first cut 0.78 times; notes/issue19).
+  std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> fourth_uv_holder;
+  std::optional<decltype(get(CGAL::dynamic_edge_property_t<bool>(), tm))> fourth_seam_holder;
+  Optimization_result fourth;
+  Visitor fourth_visitor(nullptr, stop, nullptr, false);
+  bool has_fourth = false, fourth_time_limited = false;
+  if constexpr(!Nested)
+  {
+    const bool user_start = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
+    has_fourth = bound_mode && starts > 3 && !user_start && first->status() == OK;
+  }
+  if(has_fourth)
+  {
+    fourth_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
+    fourth_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
+    // (the initial seams, as the other starts read them)
+    for(auto e : edges(tm))
+    {
+      bool seam = false;
+      if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+        seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
+      put(*fourth_seam_holder, e, seam);
+    }
+  }
   auto run_first = [&] {
     // (even on an exception)
     struct Done
@@ -190,15 +219,45 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       third.initial_distortion = relaxed.initial_distortion;
     }
   };
+  auto run_fourth = [&] {
+    if constexpr(!Nested)
+    {
+      auto& fourth_uv = *fourth_uv_holder;
+      auto& fourth_seam = *fourth_seam_holder;
+      const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                        get_const_property_map(CGAL::vertex_point, tm));
+      const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+      double limit = std::numeric_limits<double>::infinity();
+      internal::read_time_limit(np, limit);
+      const Optimization_result minimized =
+        minimize_distortion(tm, fourth_uv, parameters::energy(energy).vertex_point_map(vpm).edge_is_seam_map(fourth_seam)
+                                             .time_limit((std::max)(limit - timer.time(), 1e-9)));
+      fourth_time_limited = minimized.status == WARNING_TIME_LIMIT;
+      // (a map within the bound needs no cut: the first start's run is this start's)
+      if(!minimized.has_result() || minimized.bound_met || stop.load() || fourth_time_limited) return;
+      if(!internal::cut_from_the_worst_vertex(tm, vpm, fourth_seam,
+                                              internal::face_area_and_density(tm, vpm, fourth_uv, energy)))
+        return;
+      const auto start_np = np.number_of_starts(1).use_uv_map_as_initial(false).edge_is_seam_map(fourth_seam)
+                              .visitor(std::ref(fourth_visitor)).time_limit((std::max)(limit - timer.time(), 1e-9));
+      fourth = optimize_seams_impl<TriangleMesh, std::decay_t<decltype(fourth_uv)>, std::decay_t<decltype(start_np)>,
+                                   true>(tm, fourth_uv, start_np);
+      fourth_time_limited = fourth.status == WARNING_TIME_LIMIT;
+    }
+  };
+  auto run_third_and_fourth = [&] {
+    if(has_third) run_third();
+    if(has_fourth) run_fourth();
+  };
   auto run_others = [&] {
     if(second) run_second();
-    if(has_third) run_third();
+    run_third_and_fourth();
   };
   auto run_others_side_by_side = [&] {
-    if(second && has_third) internal::run_side_by_side(run_second, run_third, stop);
+    if(second && (has_third || has_fourth)) internal::run_side_by_side(run_second, run_third_and_fourth, stop);
     else run_others();
   };
-  if((second || has_third) && !shared_solver)
+  if((second || has_third || has_fourth) && !shared_solver)
     internal::run_side_by_side(run_first, run_others_side_by_side, stop);
   else
   {
@@ -234,19 +293,35 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       third_kept = true;
     }
   }
+  bool fourth_kept = false;
+  if(has_fourth && !stop.load())
+  {
+    const double kept_cost = third_kept ? result.weighted_seam_length_normalized
+                                        : (kept == first.get() ? Access::seam_cost(*first) : Access::seam_cost(*second));
+    if(feasible(fourth) && (!feasible(result) || fourth.weighted_seam_length_normalized < kept_cost))
+    {
+      result = std::move(fourth);
+      result.start = 3;
+      third_kept = false;
+      fourth_kept = true;
+    }
+  }
   // the time limit that cut any start short cut the call short: the kept
   // result is the best so far, not the one an unlimited call would give
   if(result.status == OK && (first->status() == WARNING_TIME_LIMIT ||
-                             (second && second->status() == WARNING_TIME_LIMIT) || third_time_limited))
+                             (second && second->status() == WARNING_TIME_LIMIT) || third_time_limited ||
+                             fourth_time_limited))
     result.status = WARNING_TIME_LIMIT;
   if(!has_result(result.status)) return result;
-  if(third_kept)
+  if(third_kept || fourth_kept)
   {
-    // (packed already, if asked: the phase packs its own result)
+    // (packed already, if asked: the nested run packs its own result)
+    const auto& start_uv = third_kept ? *third_uv_holder : *fourth_uv_holder;
+    const auto& start_seam = third_kept ? *third_seam_holder : *fourth_seam_holder;
     for(auto h : halfedges(tm))
-      if(!is_border(h, tm)) put(uvmap, h, get(*third_uv_holder, h));
+      if(!is_border(h, tm)) put(uvmap, h, get(start_uv, h));
     if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-      for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(*third_seam_holder, e));
+      for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(start_seam, e));
     result.seconds = timer.time();
     return result;
   }
@@ -543,10 +618,15 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///       scaffold from the default initial map of those seams, their slits joined to the border along
 ///       shortest paths (one start), beside the second and within its
 ///       iteration budget (about one more start's work; shorter seams where parts of the mesh press on each
-///       other in UV, see the user manual); it is the second start otherwise. The visitor is called by the
+///       other in UV, see the user manual); it is the second start otherwise. 4 adds, after the third, a
+///       start from EBCuts' first cut: the distortion minimized with the initial seams, the shortest path
+///       from the vertex of largest distortion to the nearest seam or border cut, then one start from the
+///       default initial map of those seams (without `use_uv_map_as_initial`; none when the minimized map
+///       already meets the bound or nothing can be cut; shorter seams where the greedy growth from the uncut
+///       map winds them, e.g. a helix over a tube). The visitor is called by the
 ///       first start only, from the calling thread; when it stops the run, every start stops and the first's
-///       result is kept (`Optimization_result::start` says which start the result comes from: 0, 1 or 2)}
-///     \cgalParamType{`int` (any integral type), 1, 2 or 3}
+///       result is kept (`Optimization_result::start` says which start the result comes from: 0, 1, 2 or 3)}
+///     \cgalParamType{`int` (any integral type), 1, 2, 3 or 4}
 ///     \cgalParamDefault{`2`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{proxy_number_of_faces}

@@ -40,9 +40,9 @@ usage_error "recut-rounds" --recut-rounds -1
 usage_error "recut-rounds" --recut-rounds abc
 usage_error "keep-seams" --keep-seams --recut-rounds 2
 usage_error "seam-weight" --seam-weight 0.1 --recut-rounds 2
-usage_error "1, 2 or 3" --starts 0
-usage_error "1, 2 or 3" --starts 4
-usage_error "1, 2 or 3" --starts abc
+usage_error "1, 2, 3 or 4" --starts 0
+usage_error "1, 2, 3 or 4" --starts 5
+usage_error "1, 2, 3 or 4" --starts abc
 usage_error "keep-seams" --keep-seams --starts 2
 usage_error "seam-weight" --seam-weight 0.1 --starts 1
 # an option where a value should be is no value (a file name starting with

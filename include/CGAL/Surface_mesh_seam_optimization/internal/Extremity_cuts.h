@@ -91,34 +91,14 @@ bool cut_from_the_worst_vertex(const TriangleMesh& tm, VPM vpm, SeamMap seams, c
   return true;
 }
 
-// EBCuts: the distortion-only descent (minimize_distortion(), no scaffold)
-// between cuts; the bound, energy, vertex_point_map, number_of_iterations
-// (in total) and time_limit of `np` apply. Writes `uvmap` and `seams` (every
-// edge) only with a result.
-template <typename TriangleMesh, typename UVMap, typename SeamMap, typename NamedParameters, typename Energy>
-Optimization_result extremity_cuts(const TriangleMesh& tm, UVMap uvmap, SeamMap seams, const NamedParameters& np,
-                                   const Energy& energy, double bound)
+// (area, energy density) of a face of `tm` under the per-corner map `uv`:
+// what cut_from_the_worst_vertex() ranks vertices by.
+template <typename TriangleMesh, typename VPM, typename UVMap, typename Energy>
+auto face_area_and_density(const TriangleMesh& tm, VPM vpm, UVMap uv, const Energy& energy)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
-  CGAL::Real_timer timer;
-  timer.start();
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
-  const std::size_t max_iterations = number_of_iterations_parameter(np, default_number_of_iterations);
-  double time_limit = std::numeric_limits<double>::infinity();
-  read_time_limit(np, time_limit);
-
-  typedef typename boost::property_traits<UVMap>::value_type Point_2;
-  auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), tm);
-  auto cut = get(CGAL::dynamic_edge_property_t<bool>(), tm);
-  for(auto e : edges(tm)) put(cut, e, false);
-
-  // (area, energy density) of a face of the current map
-  auto density = [&](face_descriptor f) {
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  return [&tm, vpm, uv, &energy](face_descriptor f) {
     const halfedge_descriptor h0 = halfedge(f, tm), h1 = next(h0, tm), h2 = next(h1, tm);
     const auto q0 = get(vpm, target(h0, tm)), q1 = get(vpm, target(h1, tm)), q2 = get(vpm, target(h2, tm));
     const auto p0 = get(uv, h0), p1 = get(uv, h1), p2 = get(uv, h2);
@@ -135,6 +115,32 @@ Optimization_result extremity_cuts(const TriangleMesh& tm, UVMap uvmap, SeamMap 
     J(1, 1) = (d2y - J(1, 0) * x2) / y2;
     return std::make_pair(0.5 * l1 * y2, energy.value(J));
   };
+}
+
+// EBCuts: the distortion-only descent (minimize_distortion(), no scaffold)
+// between cuts; the bound, energy, vertex_point_map, number_of_iterations
+// (in total) and time_limit of `np` apply. Writes `uvmap` and `seams` (every
+// edge) only with a result.
+template <typename TriangleMesh, typename UVMap, typename SeamMap, typename NamedParameters, typename Energy>
+Optimization_result extremity_cuts(const TriangleMesh& tm, UVMap uvmap, SeamMap seams, const NamedParameters& np,
+                                   const Energy& energy, double bound)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  CGAL::Real_timer timer;
+  timer.start();
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const std::size_t max_iterations = number_of_iterations_parameter(np, default_number_of_iterations);
+  double time_limit = std::numeric_limits<double>::infinity();
+  read_time_limit(np, time_limit);
+
+  typedef typename boost::property_traits<UVMap>::value_type Point_2;
+  auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), tm);
+  auto cut = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+  for(auto e : edges(tm)) put(cut, e, false);
+
+  const auto density = face_area_and_density(tm, vpm, uv, energy);
 
   Optimization_result result, r;
   std::size_t iterations = 0, cuts = 0;
