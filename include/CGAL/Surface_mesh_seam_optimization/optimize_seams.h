@@ -281,31 +281,21 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       if(result.status == WARNING_CANCELLED) result.status = OK;
     }
   }
-  bool third_kept = false;
-  if(has_third && !stop.load())
-  {
-    const double kept_cost = kept == first.get() ? Access::seam_cost(*first) : Access::seam_cost(*second);
-    if(feasible(third) && (!feasible(result) || third.weighted_seam_length_normalized < kept_cost))
-    {
-      result = std::move(third);
-      result.start = 2;
-      if(result.status == WARNING_CANCELLED) result.status = OK;
-      third_kept = true;
-    }
-  }
-  bool fourth_kept = false;
-  if(has_fourth && !stop.load())
-  {
-    const double kept_cost = third_kept ? result.weighted_seam_length_normalized
-                                        : (kept == first.get() ? Access::seam_cost(*first) : Access::seam_cost(*second));
-    if(feasible(fourth) && (!feasible(result) || fourth.weighted_seam_length_normalized < kept_cost))
-    {
-      result = std::move(fourth);
-      result.start = 3;
-      third_kept = false;
-      fourth_kept = true;
-    }
-  }
+  // a nested start's result replaces the kept one if feasible and cheaper
+  double kept_cost = Access::seam_cost(*kept);
+  auto compete = [&](Optimization_result& candidate, std::size_t start) {
+    if(!feasible(candidate) || (feasible(result) && !(candidate.weighted_seam_length_normalized < kept_cost)))
+      return false;
+    kept_cost = candidate.weighted_seam_length_normalized;
+    result = std::move(candidate);
+    result.start = start;
+    // (its iteration budget stopped it, not the user)
+    if(result.status == WARNING_CANCELLED) result.status = OK;
+    return true;
+  };
+  bool third_kept = has_third && !stop.load() && compete(third, 2);
+  const bool fourth_kept = has_fourth && !stop.load() && compete(fourth, 3);
+  if(fourth_kept) third_kept = false;
   // the time limit that cut any start short cut the call short: the kept
   // result is the best so far, not the one an unlimited call would give
   if(result.status == OK && (first->status() == WARNING_TIME_LIMIT ||
