@@ -12,8 +12,9 @@
 #   --profile      the time of each run split by phase (assembly, factorization,
 #                  symbolic analysis, line search, topology queries, scaffold), on the
 #                  --quick meshes or those given; every report has this table too
-#   --starts N     number_of_starts(N) (default 2; 3 adds the start without the
-#                  scaffold first, 4 also the one from a first straight cut)
+#   --starts N     number_of_starts(N) (default 2: the first and the one without
+#                  the scaffold first; 3 adds the one from a first straight cut,
+#                  4 also the one whose dual step holds the price)
 #   --no-bijectivity  bijective(false): no scaffold, charts may overlap (the
 #                  reference's non-bijective figures are then the yardstick)
 #   (default)      every mesh of reference_optcuts.csv

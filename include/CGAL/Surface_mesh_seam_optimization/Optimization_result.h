@@ -75,9 +75,10 @@ struct Optimization_result
   std::size_t overlapping_triangle_pairs = 0; ///< checked on the result, whether `bijective` was asked for or not
   bool bijective = false;           ///< no flipped triangle and no overlap (checked, not assumed)
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
-  /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts' dual
-  /// step), 1 the second, 2 the third (seams without the scaffold first; its iterations, operations and
-  /// scaffold rebuilds count both phases), 3 the fourth (from a first straight cut); the other figures are
+  /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts from
+  /// the initial map), 1 the hold-price start (a dual step that holds the price of distortion while a cut
+  /// pays), 2 the relaxed start (seams without the scaffold first; its iterations, operations and scaffold
+  /// rebuilds count both phases), 3 the first-cut start (from EBCuts' first cut); the other figures are
   /// those of that start
   std::size_t start = 0;
   /// faces of the simplified proxy the seams were optimized on before the mesh

@@ -22,6 +22,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <atomic>
 #include <chrono>
 #include <limits>
 #include <cmath>
@@ -30,6 +31,140 @@
 
 namespace CGAL {
 namespace Surface_mesh_seam_optimization {
+namespace internal {
+
+// minimize_distortion(); `stop`, when raised, ends the descent as the time
+// limit does (a start of optimize_seams() cancelled with the others).
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+Optimization_result minimize_distortion_impl(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                                             const std::atomic<bool>* stop)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Optimization_result result;
+
+  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
+  if(!internal::check_energy(energy, result.message))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    return result;
+  }
+  // (one pattern per level: nested dissection pays)
+  auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
+                                 Default_sparse_solver_traits(Default_sparse_solver_traits::default_threshold, true));
+  const std::size_t max_iterations =
+    internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
+  internal::Newton_settings settings;
+  // Extrapolated full steps: Newton iterations 20 -> 15 on bimba_i_f10000,
+  // 136 -> 65 on hand_1_i_f5000, 251 -> 153 on lucy_o_f12067 (notes/issue20).
+  settings.extrapolation_limit = 16;
+  // Steps along the exact curvature after full steps: lucy at 96544 faces
+  // 98 -> 65 Newton iterations, 34 -> 22 s (notes/issue20).
+  settings.exact_curvature_iterations = 10;
+  settings.gradient_tolerance =
+    choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);
+  if(!(settings.gradient_tolerance >= 0))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    result.message = "gradient_tolerance must be >= 0";
+    return result;
+  }
+  double time_limit = 0;
+  if(!internal::read_time_limit(np, time_limit))
+  {
+    result.status = ERROR_WRONG_PARAMETER;
+    result.message = "time_limit must be > 0 seconds";
+    return result;
+  }
+  const internal::Deadline deadline(time_limit, stop);
+
+  internal::Cut_mesh cm;
+  internal::Face_graph_copy<TriangleMesh> copy;
+  result.status = internal::initialize_cut_mesh(tm, uvmap, np, cm, copy, result.message);
+  if(result.status != OK) return result;
+
+  const bool use_input = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
+  // An energy with no barrier (ARAP) keeps the triangles squeezed below its
+  // area floor squeezed, to a degenerate result (from Tutte's map, the
+  // default, with ARAP_energy on 7 of 10 meshes of the benchmark; from
+  // Mean_value_coordinates_parameterizer_3's on 3 of 5): from such a map it
+  // descends from E_SD's minimum.
+  const bool barrier = internal::is_barrier_energy(energy);
+  const std::size_t squeezed =
+    !barrier && use_input ? internal::number_of_faces_below_area_floor(cm, settings.area_floor) : 0;
+  const bool distortion_first = !barrier && (!use_input || squeezed > 0);
+  if(squeezed > 0)
+    result.message += std::string(result.message.empty() ? "" : "; ") + "E_SD minimized first: " +
+                      std::to_string(squeezed) + " triangles of the initial map are squeezed below the area floor";
+  const Symmetric_Dirichlet_energy sd;
+
+  // Large meshes start from a coarser one's map (Coarse_to_fine.h); the
+  // initial map stays if that fails.
+  std::vector<std::size_t> levels;
+  if(!use_input && cm.number_of_faces() >= internal::coarse_to_fine_minimum_faces &&
+     (distortion_first ? internal::coarse_to_fine_start(cm, sd, solver, settings, deadline, levels)
+                       : internal::coarse_to_fine_start(cm, energy, solver, settings, deadline, levels)))
+  {
+    result.message = "started from coarser meshes of";
+    for(std::size_t n : levels) result.message += " " + std::to_string(n);
+    result.message += " faces";
+  }
+
+  std::size_t sd_iterations = 0;
+  Optimization_timings sd_timings;
+  if(distortion_first)
+  {
+    internal::rescale_to_optimal(cm, sd);
+    result.initial_distortion = internal::total_energy(cm, sd, cm.uv.data());
+    result.status = internal::descend(cm, sd, solver, settings, max_iterations, deadline, sd_iterations, sd_timings,
+                                      result.message);
+    if(result.status == ERROR_LINEAR_SOLVER) return result;
+  }
+  internal::rescale_to_optimal(cm, energy);
+  if(!distortion_first)
+    result.initial_distortion = internal::total_energy(cm, sd, cm.uv.data());
+  if(!distortion_first || result.status == OK)
+    result.status = internal::descend(cm, energy, solver, settings, max_iterations - sd_iterations, deadline,
+                                      result.iterations, result.timings, result.message);
+  result.iterations += sd_iterations;
+  result.timings += sd_timings;
+  if(result.status == ERROR_LINEAR_SOLVER) return result;
+  // (the line search never allows it: a last check before anything is written)
+  std::string first_invalid;
+  if(const std::size_t invalid = internal::count_invalid_uv_triangles(cm, &first_invalid))
+  {
+    // Valid but still squeezed triangles of the initial map (Tutte's maps of
+    // long protrusions): the descent was stopped before it opened them.
+    const bool stopped = result.status == WARNING_MAXIMUM_ITERATIONS || result.status == WARNING_TIME_LIMIT;
+    if(stopped && internal::first_face_outside_barrier_domain(cm) == cm.number_of_faces())
+      result.message = "the descent stopped after " + std::to_string(result.iterations) + " iterations (" +
+                       get_error_code_name(result.status) + ") with " + std::to_string(invalid) +
+                       " triangles still squeezed below 1e-12 of their chart's area (" + first_invalid +
+                       "; initial maps squeeze long protrusions so): allow more iterations or time";
+    else
+      result.message = first_invalid;
+    result.status = ERROR_DEGENERATE_UV_RESULT;
+    return result;
+  }
+
+  internal::scale_for_output(cm, energy);
+  internal::write_uv_map(cm, copy, uvmap);
+  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+    internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
+  // no bound is enforced here; say whether the result meets the one given (default: the energy's)
+  double bound = std::numeric_limits<double>::infinity();
+  std::string ignored;
+  if(!internal::read_distortion_bound(np, energy, bound, ignored)) bound = -1; // none: not met
+  internal::measure_result(cm, energy, bound, result);
+  result.seconds = timer.time();
+  return result;
+}
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
 /// Minimizes the distortion energy (symmetric Dirichlet by default) of a UV
 /// map whose seams are fixed: projected Newton with a flip-free line search,
@@ -144,128 +279,7 @@ template <typename TriangleMesh, typename UVMap,
 Optimization_result minimize_distortion(const TriangleMesh& tm, UVMap uvmap,
                                         const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-
-  CGAL::Real_timer timer;
-  timer.start();
-  Optimization_result result;
-
-  const auto energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
-  if(!internal::check_energy(energy, result.message))
-  {
-    result.status = ERROR_WRONG_PARAMETER;
-    return result;
-  }
-  // (one pattern per level: nested dissection pays)
-  auto solver = choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                 Default_sparse_solver_traits(Default_sparse_solver_traits::default_threshold, true));
-  const std::size_t max_iterations =
-    internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
-  internal::Newton_settings settings;
-  // Extrapolated full steps: Newton iterations 20 -> 15 on bimba_i_f10000,
-  // 136 -> 65 on hand_1_i_f5000, 251 -> 153 on lucy_o_f12067 (notes/issue20).
-  settings.extrapolation_limit = 16;
-  // Steps along the exact curvature after full steps: lucy at 96544 faces
-  // 98 -> 65 Newton iterations, 34 -> 22 s (notes/issue20).
-  settings.exact_curvature_iterations = 10;
-  settings.gradient_tolerance =
-    choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);
-  if(!(settings.gradient_tolerance >= 0))
-  {
-    result.status = ERROR_WRONG_PARAMETER;
-    result.message = "gradient_tolerance must be >= 0";
-    return result;
-  }
-  double time_limit = 0;
-  if(!internal::read_time_limit(np, time_limit))
-  {
-    result.status = ERROR_WRONG_PARAMETER;
-    result.message = "time_limit must be > 0 seconds";
-    return result;
-  }
-  const internal::Deadline deadline(time_limit);
-
-  internal::Cut_mesh cm;
-  internal::Face_graph_copy<TriangleMesh> copy;
-  result.status = internal::initialize_cut_mesh(tm, uvmap, np, cm, copy, result.message);
-  if(result.status != OK) return result;
-
-  const bool use_input = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
-  // An energy with no barrier (ARAP) keeps the triangles squeezed below its
-  // area floor squeezed, to a degenerate result (from Tutte's map, the
-  // default, with ARAP_energy on 7 of 10 meshes of the benchmark; from
-  // Mean_value_coordinates_parameterizer_3's on 3 of 5): from such a map it
-  // descends from E_SD's minimum.
-  const bool barrier = internal::is_barrier_energy(energy);
-  const std::size_t squeezed =
-    !barrier && use_input ? internal::number_of_faces_below_area_floor(cm, settings.area_floor) : 0;
-  const bool distortion_first = !barrier && (!use_input || squeezed > 0);
-  if(squeezed > 0)
-    result.message += std::string(result.message.empty() ? "" : "; ") + "E_SD minimized first: " +
-                      std::to_string(squeezed) + " triangles of the initial map are squeezed below the area floor";
-  const Symmetric_Dirichlet_energy sd;
-
-  // Large meshes start from a coarser one's map (Coarse_to_fine.h); the
-  // initial map stays if that fails.
-  std::vector<std::size_t> levels;
-  if(!use_input && cm.number_of_faces() >= internal::coarse_to_fine_minimum_faces &&
-     (distortion_first ? internal::coarse_to_fine_start(cm, sd, solver, settings, deadline, levels)
-                       : internal::coarse_to_fine_start(cm, energy, solver, settings, deadline, levels)))
-  {
-    result.message = "started from coarser meshes of";
-    for(std::size_t n : levels) result.message += " " + std::to_string(n);
-    result.message += " faces";
-  }
-
-  std::size_t sd_iterations = 0;
-  Optimization_timings sd_timings;
-  if(distortion_first)
-  {
-    internal::rescale_to_optimal(cm, sd);
-    result.initial_distortion = internal::total_energy(cm, sd, cm.uv.data());
-    result.status = internal::descend(cm, sd, solver, settings, max_iterations, deadline, sd_iterations, sd_timings,
-                                      result.message);
-    if(result.status == ERROR_LINEAR_SOLVER) return result;
-  }
-  internal::rescale_to_optimal(cm, energy);
-  if(!distortion_first)
-    result.initial_distortion = internal::total_energy(cm, sd, cm.uv.data());
-  if(!distortion_first || result.status == OK)
-    result.status = internal::descend(cm, energy, solver, settings, max_iterations - sd_iterations, deadline,
-                                      result.iterations, result.timings, result.message);
-  result.iterations += sd_iterations;
-  result.timings += sd_timings;
-  if(result.status == ERROR_LINEAR_SOLVER) return result;
-  // (the line search never allows it: a last check before anything is written)
-  std::string first_invalid;
-  if(const std::size_t invalid = internal::count_invalid_uv_triangles(cm, &first_invalid))
-  {
-    // Valid but still squeezed triangles of the initial map (Tutte's maps of
-    // long protrusions): the descent was stopped before it opened them.
-    const bool stopped = result.status == WARNING_MAXIMUM_ITERATIONS || result.status == WARNING_TIME_LIMIT;
-    if(stopped && internal::first_face_outside_barrier_domain(cm) == cm.number_of_faces())
-      result.message = "the descent stopped after " + std::to_string(result.iterations) + " iterations (" +
-                       get_error_code_name(result.status) + ") with " + std::to_string(invalid) +
-                       " triangles still squeezed below 1e-12 of their chart's area (" + first_invalid +
-                       "; initial maps squeeze long protrusions so): allow more iterations or time";
-    else
-      result.message = first_invalid;
-    result.status = ERROR_DEGENERATE_UV_RESULT;
-    return result;
-  }
-
-  internal::scale_for_output(cm, energy);
-  internal::write_uv_map(cm, copy, uvmap);
-  if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-    internal::write_seam_map(tm, cm, copy, get_parameter(np, internal_np::edge_is_seam_map));
-  // no bound is enforced here; say whether the result meets the one given (default: the energy's)
-  double bound = std::numeric_limits<double>::infinity();
-  std::string ignored;
-  if(!internal::read_distortion_bound(np, energy, bound, ignored)) bound = -1; // none: not met
-  internal::measure_result(cm, energy, bound, result);
-  result.seconds = timer.time();
-  return result;
+  return internal::minimize_distortion_impl(tm, uvmap, np, nullptr);
 }
 
 } // namespace Surface_mesh_seam_optimization

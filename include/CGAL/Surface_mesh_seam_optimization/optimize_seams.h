@@ -32,7 +32,7 @@ namespace Surface_mesh_seam_optimization {
 namespace internal {
 
 // optimize_seams(), less the E_SD start it gives a non-barrier energy.
-// (Nested: a phase of the third start, which runs one start.)
+// (Nested: a start's run from its own seams, one start.)
 template <typename TriangleMesh, typename UVMap, typename NamedParameters, bool Nested = false>
 Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np)
 {
@@ -94,30 +94,49 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   Visitor first_visitor(&visitor, stop, &budget, true), second_visitor(nullptr, stop, &budget, false);
   // one place runs the optimization and fills the result: Seam_optimizer
   std::unique_ptr<Optimizer> first = Access::set_up<Optimizer>(tm, uvmap, first_visitor, np);
-  // Bound mode: a second start from the same setup, whose dual step holds the
-  // price of distortion while a cut pays at it; its seams are shorter on some
-  // meshes, longer on others (issue 19), so the shorter feasible result is kept.
+  // Bound mode: more starts, the shortest feasible result kept; each finds
+  // shorter seams than the others on some meshes (issue 19). They are
+  // numbered by kind (Optimization_result::start) and taken in the order of
+  // their gain on the 40 benchmark meshes (notes/issue19): with the
+  // scaffold, the relaxed start (2), then the first-cut start (3), then the
+  // hold-price start (1); without it, the hold-price start, then the
+  // first-cut start.
   constexpr bool bound_mode = parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
+  bool has_third = false, has_fourth = false, has_second = false;
+  if constexpr(bound_mode && !Nested)
+  {
+    if(first->status() == OK)
+    {
+      const bool bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
+      const bool user_start = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
+      // (no relaxed start without the scaffold, no first cut from the user's map)
+      int left = starts - 1;
+      for(const int kind : bijective ? std::vector<int>{2, 3, 1} : std::vector<int>{1, 3})
+        if(!(kind == 3 && user_start) && left-- > 0)
+          (kind == 1 ? has_second : kind == 2 ? has_third : has_fourth) = true;
+    }
+  }
+  // The hold-price start: the first's setup, with a dual step that holds the
+  // price of distortion while a cut pays at it (hand1: 13.67 -> 10.08).
   // Copies of solver traits share their solver (as CGAL's do): the second
   // start gets a solver of its own, but for a solver the user gave, a copy,
   // and then the starts take turns.
   constexpr bool shared_solver =
     !parameters::is_default_parameter<NamedParameters, CGAL::internal_np::sparse_linear_solver_t>::value;
   std::unique_ptr<Optimizer> second;
-  if(bound_mode && starts > 1 && first->status() == OK)
+  if(has_second)
     second = Access::copy_setup(*first, second_visitor,
                                 choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver()),
                                 internal::HOLD_PRICE_WHILE_PAYING);
-  // Bound mode with the scaffold, a third start: the seams optimized without
+  // The relaxed start (with the scaffold): the seams optimized without
   // the scaffold first, then the scaffold run from the default initial map of
   // those seams. The relaxed problem's cuts are kept; a run with the scaffold
   // from the start takes its cuts while the charts' parts press on each other
   // and buys many cheap ones instead (rgb_dragon_o_f8000: 28.6 against 21.4;
   // notes/issue19). The run without the scaffold is the first start's up to
   // the end of its lazy phase (no overlap yet): it forks from there (if that
-  // phase never ends, there is nothing to relax and it ends). Both phases run within the
-  // second start's iteration budget, on their own maps (made only for a
-  // third start).
+  // phase never ends, there is nothing to relax and it ends). Both phases run
+  // within an iteration budget, on their own maps (made only for this start).
   auto feasible = [](const Optimization_result& r) { return r.has_result() && r.bound_met; };
   typedef typename boost::property_traits<UVMap>::value_type Uv;
   std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> third_uv_holder;
@@ -125,12 +144,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   Optimization_result third;
   Visitor third_visitor(nullptr, stop, &budget, false);
   internal::Handoff<Optimizer> free_run;
-  bool has_third = false, third_time_limited = false;
-  if constexpr(!Nested)
-  {
-    const bool bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
-    has_third = bound_mode && bijective && starts > 2 && first->status() == OK;
-  }
+  bool third_time_limited = false;
   if(has_third)
   {
     third_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
@@ -141,7 +155,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
                                                        Solver())));
     });
   }
-  // Bound mode, a fourth start: EBCuts' first cut (the shortest path from
+  // The first-cut start: EBCuts' first cut (the shortest path from
   // the vertex of largest distortion of the map minimized with the initial
   // seams to the nearest seam or border), then one start from the default
   // initial map of those seams. The greedy growth from the uncut map can
@@ -150,13 +164,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> fourth_uv_holder;
   std::optional<decltype(get(CGAL::dynamic_edge_property_t<bool>(), tm))> fourth_seam_holder;
   Optimization_result fourth;
-  Visitor fourth_visitor(nullptr, stop, nullptr, false);
-  bool has_fourth = false, fourth_time_limited = false;
-  if constexpr(!Nested)
-  {
-    const bool user_start = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
-    has_fourth = bound_mode && starts > 3 && !user_start && first->status() == OK;
-  }
+  Visitor fourth_visitor(nullptr, stop, &budget, false);
+  bool fourth_time_limited = false;
   if(has_fourth)
   {
     fourth_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
@@ -192,7 +201,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       // Where the charts never overlapped, the first start's run was the
       // relaxed problem's and its result is already bijective: the scaffold
       // phase would only start over from the same seams (on the 40 benchmark
-      // meshes it never found shorter ones there), so the third start ends.
+      // meshes it never found shorter ones there), so the relaxed start ends.
       if(!forked) return;
       third_visitor.add_iterations(Access::iterations(*forked));
       Access::resume(*forked);
@@ -229,12 +238,16 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
       double limit = std::numeric_limits<double>::infinity();
       internal::read_time_limit(np, limit);
-      const Optimization_result minimized =
-        minimize_distortion(tm, fourth_uv, parameters::energy(energy).vertex_point_map(vpm).edge_is_seam_map(fourth_seam)
-                                             .time_limit((std::max)(limit - timer.time(), 1e-9)));
+      // (stopped with the other starts by a cancel)
+      const Optimization_result minimized = internal::minimize_distortion_impl(
+        tm, fourth_uv,
+        parameters::energy(energy).vertex_point_map(vpm).edge_is_seam_map(fourth_seam)
+          .time_limit((std::max)(limit - timer.time(), 1e-9)),
+        &stop);
+      if(stop.load()) return;
       fourth_time_limited = minimized.status == WARNING_TIME_LIMIT;
       // (a map within the bound needs no cut: the first start's run is this start's)
-      if(!minimized.has_result() || minimized.bound_met || stop.load() || fourth_time_limited) return;
+      if(!minimized.has_result() || minimized.bound_met || fourth_time_limited) return;
       if(!internal::cut_from_the_worst_vertex(tm, vpm, fourth_seam,
                                               internal::face_area_and_density(tm, vpm, fourth_uv, energy)))
         return;
@@ -245,24 +258,26 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       fourth_time_limited = fourth.status == WARNING_TIME_LIMIT;
     }
   };
-  auto run_third_and_fourth = [&] {
-    if(has_third) run_third();
-    if(has_fourth) run_fourth();
-  };
+  // The first start on the calling thread, the next beside it, the others
+  // after that one (on two cores: after the first start).
+  // (in the order they are taken in: with the scaffold relaxed, first-cut,
+  // hold-price; without it hold-price, first-cut)
+  std::vector<std::function<void()>> others;
+  if(has_third) others.push_back(run_third);
+  if(has_second && !has_third) others.push_back(run_second);
+  if(has_fourth) others.push_back(run_fourth);
+  if(has_second && has_third) others.push_back(run_second);
+  auto run_rest = [&] { for(std::size_t i = 1; i < others.size(); ++i) others[i](); };
   auto run_others = [&] {
-    if(second) run_second();
-    run_third_and_fourth();
+    if(others.size() > 1) internal::run_side_by_side(others[0], run_rest, stop);
+    else if(!others.empty()) others[0]();
   };
-  auto run_others_side_by_side = [&] {
-    if(second && (has_third || has_fourth)) internal::run_side_by_side(run_second, run_third_and_fourth, stop);
-    else run_others();
-  };
-  if((second || has_third || has_fourth) && !shared_solver)
-    internal::run_side_by_side(run_first, run_others_side_by_side, stop);
+  if(!others.empty() && !shared_solver)
+    internal::run_side_by_side(run_first, run_others, stop);
   else
   {
     run_first();
-    run_others();
+    for(auto& run : others) run();
   }
 
   // the first start's result, unless the second is feasible and cheaper; after
@@ -594,27 +609,29 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///     \cgalParamDefault{`OPTCUTS`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_starts}
-///     \cgalParamDescription{bound mode: 2 runs two starts from the same initial map, the first with OptCuts'
-///       dual step and the second with one that holds the price of distortion while some cut already pays at
-///       it, and keeps the result with the shorter (weighted) seams among those that meet the bound (the first
-///       on a tie, or when neither does); they run in parallel when TBB is linked, each with its own
-///       `number_of_iterations` and `time_limit`, and the result does not depend on the number of threads
-///       (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are: the starts
-///       then run one after the other). The second start does at most twice the first's Newton
-///       iterations (then its best result so far competes), so that the call takes at most about twice one
-///       start's time, whatever the schedule.
-///       1 runs the first alone (half the work, seams longer on some meshes). 3 adds, when `bijective` is
-///       true, a third start that optimizes the seams without the scaffold first (one start), then with the
-///       scaffold from the default initial map of those seams, their slits joined to the border along
-///       shortest paths (one start), beside the second and within its
-///       iteration budget (about one more start's work; shorter seams where parts of the mesh press on each
-///       other in UV, see the user manual); it is the second start otherwise. 4 adds, after the third, a
-///       start from EBCuts' first cut: the distortion minimized with the initial seams, the shortest path
-///       from the vertex of largest distortion to the nearest seam or border cut, then one start from the
-///       default initial map of those seams (without `use_uv_map_as_initial`; none when the minimized map
-///       already meets the bound or nothing can be cut; shorter seams where the greedy growth from the uncut
-///       map winds them, e.g. a helix over a tube). The visitor is called by the
-///       first start only, from the calling thread; when it stops the run, every start stops and the first's
+///     \cgalParamDescription{bound mode: runs that many starts and keeps the result with the shorter
+///       (weighted) seams among those that meet the bound (the lower-numbered start on a tie, the first when
+///       none does). The first start (0) runs OptCuts from the initial map. The others, taken in this order
+///       with `bijective` true: the relaxed start (2), which optimizes the seams without the scaffold first
+///       (the first start's run, taken over where its charts first overlap; none where they never do), then
+///       with the scaffold from the default initial map of those seams, their slits joined to the border
+///       along shortest paths (shorter seams where parts of the mesh press on each other in UV, see the user
+///       manual); the first-cut start (3), which minimizes the distortion with the initial seams, cuts the
+///       shortest path from the vertex of largest distortion to the nearest seam or border (EBCuts' first
+///       cut), then runs one start from the default initial map of those seams (not with
+///       `use_uv_map_as_initial`; none when the minimized map already meets the bound or nothing can be
+///       cut; shorter seams where the greedy growth from the uncut map winds them, e.g. a helix over a
+///       tube); the hold-price start (1), the first start's setup with a dual step that holds the price of
+///       distortion while some cut already pays at it. With `bijective` false: the hold-price start, then
+///       the first-cut start. So 1 runs the first alone (half the work, seams longer on some meshes), and the
+///       default 2 adds the relaxed start (the hold-price start without the scaffold). The second start
+///       runs beside the first, in parallel when TBB is linked, and the others after it; each start has
+///       its own `number_of_iterations` and `time_limit`, and the result does not depend on the number of
+///       threads (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are:
+///       the starts then run one after the other). Every start after the first does at most twice the
+///       first's Newton iterations (then its best result so far competes), so that two starts take at
+///       most about twice one start's time, whatever the schedule. The visitor is called by the first
+///       start only, from the calling thread; when it stops the run, every start stops and the first's
 ///       result is kept (`Optimization_result::start` says which start the result comes from: 0, 1, 2 or 3)}
 ///     \cgalParamType{`int` (any integral type), 1, 2, 3 or 4}
 ///     \cgalParamDefault{`2`}

@@ -92,7 +92,7 @@ public:
   // `lambda` becomes the safe configuration's. The caller then builds the
   // scaffold (see scaffold_failed()).
   // `before_scaffold()` is called once the lazy phase is found over, before
-  // anything is changed for it (the third start of optimize_seams() forks there).
+  // anything is changed for it (the relaxed start of optimize_seams() forks there).
   template <typename Distortion, typename Before>
   Verdict check(Cut_mesh& cm, double& lambda, const Distortion& e_sd, const Before& before_scaffold)
   {

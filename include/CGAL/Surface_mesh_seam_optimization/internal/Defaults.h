@@ -24,14 +24,15 @@ constexpr std::size_t default_number_of_iterations_distortion_only = 10000;
 // (named parameter number_of_recut_rounds).
 constexpr int default_number_of_recut_rounds = 6;
 
-// Starts of optimize_seams() in bound mode, each with its own dual-step rule,
-// the shortest feasible result kept (named parameter number_of_starts).
+// Starts of optimize_seams() in bound mode, the shortest feasible result
+// kept (named parameter number_of_starts): the first and, with the scaffold,
+// the relaxed start (without it, the hold-price start).
 constexpr int default_number_of_starts = 2;
-// The second start does at most this many times the first's Newton
-// iterations: the call, which waits for both, takes at most about twice one
-// start. (On the 19 meshes where both were measured, the second's result was
-// kept only when it took at most 2.04 times the first's iterations
-// (sphere_f1522); it took 2.1-2.7 times on six meshes, and lost on all six.)
+// Every start after the first does at most this many times the first's
+// Newton iterations: two starts take at most about twice one start. (On the
+// 19 meshes where it was measured, the hold-price start's result was kept
+// only when it took at most 2.04 times the first's iterations (sphere_f1522);
+// it took 2.1-2.7 times on six meshes, and lost on all six.)
 constexpr double second_start_iteration_factor = 2.;
 // Seams of a mesh of more than twice this many faces are optimized on a proxy
 // of this many faces first (parameters::proxy_number_of_faces(); 0: never).

@@ -25,12 +25,12 @@ namespace CGAL {
 namespace Surface_mesh_seam_optimization {
 namespace internal {
 
-// The second start's effort is bounded by the first's: it does at most
-// `factor` times the first start's Newton iterations, so that the call,
-// which waits for both, takes at most about that many times one start.
-// Deterministic whatever the schedule: while the first start runs, the
-// second waits whenever it would get ahead of `factor` times the first's
-// count so far, and once the first is done the bound is final.
+// The other starts' effort is bounded by the first's: each does at most
+// `factor` times the first start's Newton iterations, so that two starts
+// take at most about that many times one start. Deterministic whatever the
+// schedule: while the first start runs, another waits whenever it would get
+// ahead of `factor` times the first's count so far, and once the first is
+// done the bound is final.
 class Iteration_budget
 {
 public:
@@ -46,7 +46,7 @@ public:
     { std::lock_guard<std::mutex> lock(m_mutex); m_done = true; }
     m_changed.notify_all();
   }
-  // whether the second start may do its n-th iteration
+  // whether another start may do its n-th iteration
   bool second_may_go(std::size_t n)
   {
     std::unique_lock<std::mutex> lock(m_mutex);

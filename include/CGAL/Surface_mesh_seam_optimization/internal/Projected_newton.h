@@ -23,6 +23,8 @@
 
 #include <Eigen/Sparse>
 
+#include <atomic>
+
 #include <algorithm>
 #include <chrono>
 #include <type_traits>
@@ -53,20 +55,24 @@ private:
 };
 
 // The `time_limit` named parameter: reached once that many seconds have
-// passed since construction; never with no limit (+inf).
+// passed since construction; never with no limit (+inf). Also reached once
+// `stop` is raised (a start of optimize_seams() cancelled with the others).
 class Deadline
 {
 public:
-  explicit Deadline(double seconds = std::numeric_limits<double>::infinity())
-    : m_seconds(seconds), m_start(std::chrono::steady_clock::now()) {}
+  explicit Deadline(double seconds = std::numeric_limits<double>::infinity(),
+                    const std::atomic<bool>* stop = nullptr)
+    : m_seconds(seconds), m_start(std::chrono::steady_clock::now()), m_stop(stop) {}
   bool reached() const
   {
+    if(m_stop && m_stop->load()) return true;
     return m_seconds < std::numeric_limits<double>::infinity() &&
            std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count() >= m_seconds;
   }
 private:
   double m_seconds;
   std::chrono::steady_clock::time_point m_start;
+  const std::atomic<bool>* m_stop;
 };
 
 // Reads `time_limit` (seconds > 0; default none); false if it is not valid.
