@@ -987,6 +987,23 @@ void check_starts(const std::string& name, const Run& r, Run& again, const NP& n
   BOOST_TEST(again.result.iterations == r.result.iterations);
 }
 
+// A start added by more starts: the run with more starts (`more`) keeps
+// start `kept`, the one with fewer (`fewer`) does not, and its seams are
+// below `ratio` times theirs; both meet the bound, and `again`, the run with
+// more starts on one thread, gives the same result.
+template <typename Fewer, typename More>
+void check_added_start(const std::string& name, const std::string& dir, const Fewer& fewer_np, const More& more_np,
+                       std::size_t kept, double ratio, Run& fewer, Run& more, Run& again)
+{
+  run(name, fewer, fewer_np, dir);
+  run(name, more, more_np, dir);
+  check_starts(name, more, again, more_np, dir);
+  check_met(fewer);
+  BOOST_TEST(fewer.result.start != kept);
+  BOOST_TEST(more.result.start == kept);
+  BOOST_TEST(more.result.seam_length_normalized < ratio * fewer.result.seam_length_normalized);
+}
+
 // planck_s1 (775 faces): the hold-price start (start 1, the fourth taken
 // with the scaffold), whose dual step holds the price of distortion while a
 // cut pays, finds shorter seams under the bound than the first three starts
@@ -994,14 +1011,8 @@ void check_starts(const std::string& name, const Run& r, Run& again, const NP& n
 BOOST_AUTO_TEST_CASE(the_hold_price_start_shortens_the_seams)
 {
   Run three, four, again;
-  run("planck_s1.obj", three, SMSO_np::number_of_starts(3), SMSO_TEST_DATA_DIR);
-  run("planck_s1.obj", four, SMSO_np::number_of_starts(4), SMSO_TEST_DATA_DIR);
-  check_starts("planck_s1.obj", four, again, SMSO_np::number_of_starts(4), SMSO_TEST_DATA_DIR);
-  check_met(three);
-  BOOST_TEST(SMSO::number_of_flipped_triangles(four.sm, four.uv) == 0u);
-  BOOST_TEST(three.result.start != 1u);
-  BOOST_TEST(four.result.start == 1u);
-  BOOST_TEST(four.result.seam_length_normalized < 0.97 * three.result.seam_length_normalized);
+  check_added_start("planck_s1.obj", SMSO_TEST_DATA_DIR, SMSO_np::number_of_starts(3), SMSO_np::number_of_starts(4), 1u,
+                    0.97, three, four, again);
 }
 
 // Two starts in parallel give the same result run after run, whatever the
@@ -1058,13 +1069,8 @@ BOOST_AUTO_TEST_CASE(the_relaxed_start_adds_nothing_where_the_charts_never_overl
 BOOST_AUTO_TEST_CASE(the_relaxed_start_cutting_without_the_scaffold_first_shortens_the_seams)
 {
   Run one, two, again;
-  run("hand1.obj", one, SMSO_np::number_of_starts(1), SMSO_TEST_DATA_DIR);
-  run("hand1.obj", two, SMSO_np::number_of_starts(2), SMSO_TEST_DATA_DIR);
-  check_starts("hand1.obj", two, again, SMSO_np::number_of_starts(2), SMSO_TEST_DATA_DIR);
-  check_met(one);
-  BOOST_TEST(one.result.start == 0u);
-  BOOST_TEST(two.result.start == 2u);
-  BOOST_TEST(two.result.seam_length_normalized < 0.95 * one.result.seam_length_normalized);
+  check_added_start("hand1.obj", SMSO_TEST_DATA_DIR, SMSO_np::number_of_starts(1), SMSO_np::number_of_starts(2), 2u, 0.95,
+                    one, two, again);
   bool same = true;
   for(halfedge_descriptor h : two.sm.halfedges())
     if(!two.sm.is_border(h))
@@ -1081,13 +1087,8 @@ BOOST_AUTO_TEST_CASE(the_relaxed_start_cutting_without_the_scaffold_first_shorte
 BOOST_AUTO_TEST_CASE(the_first_cut_start_shortens_the_seams)
 {
   Run two, three, again;
-  run("bishop_part_f1000.obj", two, SMSO_np::number_of_starts(2));
-  run("bishop_part_f1000.obj", three, SMSO_np::number_of_starts(3));
-  check_starts("bishop_part_f1000.obj", three, again, SMSO_np::number_of_starts(3), SMSO_DATA_DIR);
-  check_met(two);
-  BOOST_TEST(two.result.start != 3u);
-  BOOST_TEST(three.result.start == 3u);
-  BOOST_TEST(three.result.seam_length_normalized < 0.98 * two.result.seam_length_normalized);
+  check_added_start("bishop_part_f1000.obj", SMSO_DATA_DIR, SMSO_np::number_of_starts(2), SMSO_np::number_of_starts(3), 3u,
+                    0.98, two, three, again);
 }
 
 // The relaxed start takes over the first start's run where its lazy phase ends
