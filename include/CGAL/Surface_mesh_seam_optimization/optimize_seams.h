@@ -102,7 +102,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // hold-price start (1); without it, the hold-price start, then the
   // first-cut start.
   constexpr bool bound_mode = parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
-  bool has_third = false, has_fourth = false, has_second = false;
+  // (the kinds of the starts after the first, in the order they run)
+  std::vector<int> taken;
   if constexpr(bound_mode && !Nested)
   {
     if(first->status() == OK)
@@ -110,12 +111,12 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       const bool bijective = choose_parameter(get_parameter(np, internal_np::bijective), true);
       const bool user_start = choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false);
       // (no relaxed start without the scaffold, no first cut from the user's map)
-      int left = starts - 1;
       for(const int kind : bijective ? std::vector<int>{2, 3, 1} : std::vector<int>{1, 3})
-        if(!(kind == 3 && user_start) && left-- > 0)
-          (kind == 1 ? has_second : kind == 2 ? has_third : has_fourth) = true;
+        if(!(kind == 3 && user_start) && int(taken.size()) < starts - 1) taken.push_back(kind);
     }
   }
+  auto takes = [&](int kind) { return std::find(taken.begin(), taken.end(), kind) != taken.end(); };
+  const bool has_second = takes(1), has_third = takes(2), has_fourth = takes(3);
   // The hold-price start: the first's setup, with a dual step that holds the
   // price of distortion while a cut pays at it (hand1: 13.67 -> 10.08).
   // Copies of solver traits share their solver (as CGAL's do): the second
@@ -260,13 +261,10 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   };
   // The first start on the calling thread, the next beside it, the others
   // after that one (on two cores: after the first start).
-  // (in the order they are taken in: with the scaffold relaxed, first-cut,
-  // hold-price; without it hold-price, first-cut)
   std::vector<std::function<void()>> others;
-  if(has_third) others.push_back(run_third);
-  if(has_second && !has_third) others.push_back(run_second);
-  if(has_fourth) others.push_back(run_fourth);
-  if(has_second && has_third) others.push_back(run_second);
+  for(const int kind : taken)
+    others.push_back(kind == 1 ? std::function<void()>(run_second)
+                               : kind == 2 ? std::function<void()>(run_third) : std::function<void()>(run_fourth));
   auto run_rest = [&] { for(std::size_t i = 1; i < others.size(); ++i) others[i](); };
   auto run_others = [&] {
     if(others.size() > 1) internal::run_side_by_side(others[0], run_rest, stop);

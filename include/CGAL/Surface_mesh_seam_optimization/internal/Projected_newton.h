@@ -23,9 +23,8 @@
 
 #include <Eigen/Sparse>
 
-#include <atomic>
-
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <type_traits>
 #include <cmath>
