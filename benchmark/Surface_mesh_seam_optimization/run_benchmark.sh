@@ -13,8 +13,9 @@
 #                  symbolic analysis, line search, topology queries, scaffold), on the
 #                  --quick meshes or those given; every report has this table too
 #   --starts N     number_of_starts(N) (default 2: the first and the one without
-#                  the scaffold first; 3 adds the one from a first straight cut,
-#                  4 also the one whose dual step holds the price)
+#                  the scaffold first, or where the charts never overlap the one
+#                  from a first straight cut; 3 runs both, 4 also the one whose
+#                  dual step holds the price)
 #   --no-bijectivity  bijective(false): no scaffold, charts may overlap (the
 #                  reference's non-bijective figures are then the yardstick)
 #   (default)      every mesh of reference_optcuts.csv

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -100,10 +101,19 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // their gain on the 40 benchmark meshes (notes/issue19): with the
   // scaffold, the relaxed start (2), then the first-cut start (3), then the
   // hold-price start (1); without it, the hold-price start, then the
-  // first-cut start.
+  // first-cut start. With two starts and the scaffold, the second is the
+  // first-cut start where the first start's charts never overlap (below).
   constexpr bool bound_mode = parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
   // (the kinds of the starts after the first, in the order they run)
   std::vector<int> taken;
+  // Where the first start's charts never overlap, the relaxed start has
+  // nothing to relax: the second start is then the first-cut start, run
+  // beside the first from the beginning and dropped (whatever it reached) if
+  // the charts do overlap. Which one counts depends on the first start
+  // alone, so the result does not depend on the schedule (40 benchmark
+  // meshes: 0.964 -> 0.957, shorter on 7 of the 16 whose charts never
+  // overlap, those up to x1.6 slower: the two starts share the cores).
+  bool first_cut_unless_overlap = false;
   if constexpr(bound_mode && !Nested)
   {
     if(first->status() == OK)
@@ -113,10 +123,15 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       // (no relaxed start without the scaffold, no first cut from the user's map)
       for(const int kind : bijective ? std::vector<int>{2, 3, 1} : std::vector<int>{1, 3})
         if(!(kind == 3 && user_start) && int(taken.size()) < starts - 1) taken.push_back(kind);
+      first_cut_unless_overlap = bijective && !user_start && taken.size() == 1;
     }
   }
   auto takes = [&](int kind) { return std::find(taken.begin(), taken.end(), kind) != taken.end(); };
-  const bool has_second = takes(1), has_third = takes(2), has_fourth = takes(3);
+  const bool has_second = takes(1), has_third = takes(2), has_fourth = takes(3) || first_cut_unless_overlap;
+  // raised when the first-cut start must end: a stop, or the overlap that
+  // makes it the relaxed start's turn (first_cut_unless_overlap)
+  std::atomic<bool> fourth_stop(false);
+  bool overlapped = false;
   // The hold-price start: the first's setup, with a dual step that holds the
   // price of distortion while a cut pays at it (hand1: 13.67 -> 10.08).
   // Copies of solver traits share their solver (as CGAL's do): the second
@@ -154,6 +169,11 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       free_run.give(Access::fork_free(*first, third_visitor,
                                       choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
                                                        Solver())));
+      if(first_cut_unless_overlap)
+      {
+        overlapped = true;
+        fourth_stop.store(true);
+      }
     });
   }
   // The first-cut start: EBCuts' first cut (the shortest path from
@@ -165,7 +185,11 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   std::optional<decltype(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm))> fourth_uv_holder;
   std::optional<decltype(get(CGAL::dynamic_edge_property_t<bool>(), tm))> fourth_seam_holder;
   Optimization_result fourth;
-  Visitor fourth_visitor(nullptr, stop, &budget, false);
+  // Beside the first start, on the lane the relaxed start leaves idle, the
+  // first-cut start does at most the first's iterations (half its budget), so
+  // that the call still takes about one start's time there (face_f10000:
+  // 848 iterations against the first's 410, for longer seams).
+  Visitor fourth_visitor(nullptr, fourth_stop, &budget, false, first_cut_unless_overlap ? 0.5 : 1.);
   bool fourth_time_limited = false;
   if(has_fourth)
   {
@@ -186,8 +210,16 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     {
       internal::Iteration_budget& b;
       internal::Handoff<Optimizer>& h;
-      ~Done() { b.first_done(); h.settle(); }
-    } done{budget, free_run};
+      std::atomic<bool>& stop;
+      std::atomic<bool>& fourth_stop;
+      ~Done()
+      {
+        // (the stop the first start's visitor or exception raises ends them all)
+        if(stop.load() || std::uncaught_exceptions() > 0) fourth_stop.store(true);
+        b.first_done();
+        h.settle();
+      }
+    } done{budget, free_run, stop, fourth_stop};
     Access::begin(*first);
     first->run();
   };
@@ -232,6 +264,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   auto run_fourth = [&] {
     if constexpr(!Nested)
     {
+      if(fourth_stop.load()) return;
       auto& fourth_uv = *fourth_uv_holder;
       auto& fourth_seam = *fourth_seam_holder;
       const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -244,8 +277,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
         tm, fourth_uv,
         parameters::energy(energy).vertex_point_map(vpm).edge_is_seam_map(fourth_seam)
           .time_limit((std::max)(limit - timer.time(), 1e-9)),
-        &stop);
-      if(stop.load()) return;
+        &fourth_stop);
+      if(fourth_stop.load()) return;
       fourth_time_limited = minimized.status == WARNING_TIME_LIMIT;
       // (a map within the bound needs no cut: the first start's run is this start's)
       if(!minimized.has_result() || minimized.bound_met || fourth_time_limited) return;
@@ -265,6 +298,8 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   for(const int kind : taken)
     others.push_back(kind == 1 ? std::function<void()>(run_second)
                                : kind == 2 ? std::function<void()>(run_third) : std::function<void()>(run_fourth));
+  // (the first-cut start until the charts overlap, then the relaxed start)
+  if(first_cut_unless_overlap) others = { [&] { run_fourth(); run_third(); } };
   auto run_rest = [&] { for(std::size_t i = 1; i < others.size(); ++i) others[i](); };
   auto run_others = [&] {
     if(others.size() > 1) internal::run_side_by_side(others[0], run_rest, stop);
@@ -307,13 +342,15 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     return true;
   };
   bool third_kept = has_third && !stop.load() && compete(third, 2);
-  const bool fourth_kept = has_fourth && !stop.load() && compete(fourth, 3);
+  // (a first-cut start dropped at the overlap competes with nothing)
+  const bool fourth_counts = has_fourth && !overlapped;
+  const bool fourth_kept = fourth_counts && !stop.load() && compete(fourth, 3);
   if(fourth_kept) third_kept = false;
   // the time limit that cut any start short cut the call short: the kept
   // result is the best so far, not the one an unlimited call would give
   if(result.status == OK && (first->status() == WARNING_TIME_LIMIT ||
                              (second && second->status() == WARNING_TIME_LIMIT) || third_time_limited ||
-                             fourth_time_limited))
+                             (fourth_counts && fourth_time_limited)))
     result.status = WARNING_TIME_LIMIT;
   if(!has_result(result.status)) return result;
   if(third_kept || fourth_kept)
@@ -622,7 +659,11 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///       tube); the hold-price start (1), the first start's setup with a dual step that holds the price of
 ///       distortion while some cut already pays at it. With `bijective` false: the hold-price start, then
 ///       the first-cut start. So 1 runs the first alone (half the work, seams longer on some meshes), and the
-///       default 2 adds the relaxed start (the hold-price start without the scaffold). The second start
+///       default 2 adds the relaxed start where the first start's charts overlap and the first-cut start
+///       where they never do (the relaxed start has nothing to relax there); without the scaffold, the
+///       hold-price start. That first-cut start runs beside the first from the beginning, does at most the
+///       first's Newton iterations and is dropped, whatever it has reached, when the first start's charts
+///       overlap: which start counts depends on the first start alone. The second start
 ///       runs beside the first, in parallel when TBB is linked, and the others after it; each start has
 ///       its own `number_of_iterations` and `time_limit`, and the result does not depend on the number of
 ///       threads (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are:

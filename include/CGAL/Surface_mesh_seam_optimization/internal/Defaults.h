@@ -26,7 +26,8 @@ constexpr int default_number_of_recut_rounds = 6;
 
 // Starts of optimize_seams() in bound mode, the shortest feasible result
 // kept (named parameter number_of_starts): the first and, with the scaffold,
-// the relaxed start (without it, the hold-price start).
+// the relaxed start where the first's charts overlap, else the first-cut
+// start (without the scaffold, the hold-price start).
 constexpr int default_number_of_starts = 2;
 // Every start after the first does at most this many times the first's
 // Newton iterations: two starts take at most about twice one start. (On the

@@ -46,16 +46,17 @@ public:
     { std::lock_guard<std::mutex> lock(m_mutex); m_done = true; }
     m_changed.notify_all();
   }
-  // whether another start may do its n-th iteration
-  bool second_may_go(std::size_t n)
+  // whether another start may do its n-th iteration, within `share` of the
+  // budget (1: `factor` times the first's iterations)
+  bool second_may_go(std::size_t n, double share = 1.)
   {
     std::unique_lock<std::mutex> lock(m_mutex);
-    m_changed.wait(lock, [&] { return m_done || within(n); });
-    return within(n);
+    m_changed.wait(lock, [&] { return m_done || within(n, share); });
+    return within(n, share);
   }
 
 private:
-  bool within(std::size_t n) const { return double(n) <= m_factor * double(m_first); }
+  bool within(std::size_t n, double share) const { return double(n) <= share * m_factor * double(m_first); }
 
   double m_factor;
   std::mutex m_mutex;
@@ -94,21 +95,22 @@ private:
 // The visitor of one start: the user's visitor for the start run on the
 // calling thread (so that it is never called from another thread), none for
 // the others. A stop asked by the user's visitor stops every start. With a
-// budget, the first start reports its iterations to it and the second
-// stops (alone) when it is spent.
+// budget, the first start reports its iterations to it and another stops
+// (alone) when its `share` of it is spent.
 template <typename Visitor>
 class Start_visitor
 {
 public:
-  Start_visitor(Visitor* user, std::atomic<bool>& stop, Iteration_budget* budget = nullptr, bool first = true)
-    : m_user(user), m_stop(stop), m_budget(budget), m_first(first) {}
+  Start_visitor(Visitor* user, std::atomic<bool>& stop, Iteration_budget* budget = nullptr, bool first = true,
+                double share = 1.)
+    : m_user(user), m_stop(stop), m_budget(budget), m_first(first), m_share(share) {}
 
   bool on_iteration(const Seam_optimization_progress& p)
   {
     if(m_budget)
     {
       if(m_first) m_budget->first_iterated();
-      else if(!m_budget->second_may_go(++m_iterations)) return false;
+      else if(!m_budget->second_may_go(++m_iterations, m_share)) return false;
     }
     return go(!m_user || m_user->on_iteration(p));
   }
@@ -132,6 +134,7 @@ private:
   std::atomic<bool>& m_stop;
   Iteration_budget* m_budget;
   bool m_first;
+  double m_share;
   std::size_t m_iterations = 0;
 };
 
