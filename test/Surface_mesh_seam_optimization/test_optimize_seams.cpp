@@ -1071,6 +1071,7 @@ BOOST_AUTO_TEST_CASE(the_relaxed_start_cutting_without_the_scaffold_first_shorte
   Run one, two, again;
   check_added_start("hand1.obj", SMSO_TEST_DATA_DIR, SMSO_np::number_of_starts(1), SMSO_np::number_of_starts(2), 2u, 0.95,
                     one, two, again);
+  BOOST_TEST(one.result.start == 0u);
   bool same = true;
   for(halfedge_descriptor h : two.sm.halfedges())
     if(!two.sm.is_border(h))
@@ -1090,6 +1091,7 @@ BOOST_AUTO_TEST_CASE(the_first_cut_start_shortens_the_seams)
   Run one, two, again;
   check_added_start("bishop_part_f1000.obj", SMSO_DATA_DIR, SMSO_np::number_of_starts(1), SMSO_np::number_of_starts(2), 3u,
                     0.98, one, two, again);
+  BOOST_TEST(one.result.start == 0u);
   BOOST_TEST(two.result.scaffold_rebuilds == 0u);
 }
 
