@@ -109,8 +109,9 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // Where the first start's charts never overlap, the relaxed start has
   // nothing to relax: the second start is then the first-cut start, run
   // beside the first from the beginning and dropped (whatever it reached) if
-  // the charts do overlap. Which one counts depends on the first start
-  // alone, so the result does not depend on the schedule (40 benchmark
+  // the charts do overlap; it runs again, from its beginning, after a relaxed
+  // start that finds nothing feasible. Which one counts depends on the first
+  // start alone, so the result does not depend on the schedule (40 benchmark
   // meshes: 0.964 -> 0.957, shorter on 7 of the 16 whose charts never
   // overlap, those up to x1.6 slower: the two starts share the cores).
   bool first_cut_unless_overlap = false;
@@ -166,14 +167,16 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     third_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
     third_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
     Access::set_lazy_phase_end_hook(*first, [&] {
-      free_run.give(Access::fork_free(*first, third_visitor,
-                                      choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver),
-                                                       Solver())));
+      std::unique_ptr<Optimizer> forked =
+        Access::fork_free(*first, third_visitor,
+                          choose_parameter(get_parameter(np, CGAL::internal_np::sparse_linear_solver), Solver()));
+      // (before the hand-off: the relaxed start's lane reads it then)
       if(first_cut_unless_overlap)
       {
         overlapped = true;
         fourth_stop.store(true);
       }
+      free_run.give(std::move(forked));
     });
   }
   // The first-cut start: EBCuts' first cut (the shortest path from
@@ -189,13 +192,11 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   // first-cut start does at most the first's iterations (half its budget), so
   // that the call still takes about one start's time there (face_f10000:
   // 848 iterations against the first's 410, for longer seams).
-  Visitor fourth_visitor(nullptr, fourth_stop, &budget, false, first_cut_unless_overlap ? 0.5 : 1.);
+  Visitor fourth_visitor(nullptr, fourth_stop, &budget, false,
+                         first_cut_unless_overlap ? internal::first_cut_beside_first_share : 1.);
   bool fourth_time_limited = false;
-  if(has_fourth)
-  {
-    fourth_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
-    fourth_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
-    // (the initial seams, as the other starts read them)
+  // (the initial seams, as the other starts read them)
+  auto initial_fourth_seams = [&] {
     for(auto e : edges(tm))
     {
       bool seam = false;
@@ -203,6 +204,12 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
         seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
       put(*fourth_seam_holder, e, seam);
     }
+  };
+  if(has_fourth)
+  {
+    fourth_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
+    fourth_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
+    initial_fourth_seams();
   }
   auto run_first = [&] {
     // (even on an exception)
@@ -298,8 +305,27 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   for(const int kind : taken)
     others.push_back(kind == 1 ? std::function<void()>(run_second)
                                : kind == 2 ? std::function<void()>(run_third) : std::function<void()>(run_fourth));
-  // (the first-cut start until the charts overlap, then the relaxed start)
-  if(first_cut_unless_overlap) others = { [&] { run_fourth(); run_third(); } };
+  // (the first-cut start until the charts overlap, then the relaxed start;
+  // where that finds nothing, the first-cut start again, from its beginning)
+  if(first_cut_unless_overlap)
+    others = { [&] {
+      run_fourth();
+      run_third();
+      if(!overlapped || feasible(third)) return;
+      // (lowered before `stop` is read: a stop raises `stop` before it
+      // raises `fourth_stop` again)
+      fourth_stop.store(false);
+      if(stop.load())
+      {
+        fourth_stop.store(true);
+        return;
+      }
+      overlapped = false;
+      fourth = Optimization_result();
+      initial_fourth_seams();
+      fourth_visitor.restart();
+      run_fourth();
+    } };
   auto run_rest = [&] { for(std::size_t i = 1; i < others.size(); ++i) others[i](); };
   auto run_others = [&] {
     if(others.size() > 1) internal::run_side_by_side(others[0], run_rest, stop);
@@ -663,7 +689,8 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///       where they never do (the relaxed start has nothing to relax there); without the scaffold, the
 ///       hold-price start. That first-cut start runs beside the first from the beginning, does at most the
 ///       first's Newton iterations and is dropped, whatever it has reached, when the first start's charts
-///       overlap: which start counts depends on the first start alone. The second start
+///       overlap: which start counts depends on the first start alone; where the relaxed start then finds
+///       nothing that meets the bound, the first-cut start runs after it, from its beginning. The second start
 ///       runs beside the first, in parallel when TBB is linked, and the others after it; each start has
 ///       its own `number_of_iterations` and `time_limit`, and the result does not depend on the number of
 ///       threads (a `sparse_linear_solver` given here is shared by its copies, as CGAL's solver traits are:

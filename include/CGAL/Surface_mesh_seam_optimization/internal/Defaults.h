@@ -26,8 +26,9 @@ constexpr int default_number_of_recut_rounds = 6;
 
 // Starts of optimize_seams() in bound mode, the shortest feasible result
 // kept (named parameter number_of_starts): the first and, with the scaffold,
-// the relaxed start where the first's charts overlap, else the first-cut
-// start (without the scaffold, the hold-price start).
+// the relaxed start where the first's charts overlap, else (or after a
+// relaxed start that found nothing feasible) the first-cut start (without
+// the scaffold, the hold-price start).
 constexpr int default_number_of_starts = 2;
 // Every start after the first does at most this many times the first's
 // Newton iterations: two starts take at most about twice one start. (On the
@@ -35,6 +36,9 @@ constexpr int default_number_of_starts = 2;
 // only when it took at most 2.04 times the first's iterations (sphere_f1522);
 // it took 2.1-2.7 times on six meshes, and lost on all six.)
 constexpr double second_start_iteration_factor = 2.;
+// (the share of it the first-cut start has when it is the second start: at
+// most the first start's iterations)
+constexpr double first_cut_beside_first_share = 0.5;
 // Seams of a mesh of more than twice this many faces are optimized on a proxy
 // of this many faces first (parameters::proxy_number_of_faces(); 0: never).
 constexpr std::size_t default_proxy_number_of_faces = 0;

@@ -116,6 +116,8 @@ public:
   }
   // (a start that takes over another's run counts its iterations too)
   void add_iterations(std::size_t n) { m_iterations += n; }
+  // (a start run again from its beginning)
+  void restart() { m_iterations = 0; }
 
   bool on_topology_operation(const Seam_optimization_progress& p)
   {
