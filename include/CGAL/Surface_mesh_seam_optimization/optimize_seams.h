@@ -130,9 +130,10 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   auto takes = [&](int kind) { return std::find(taken.begin(), taken.end(), kind) != taken.end(); };
   const bool has_second = takes(1), has_third = takes(2), has_fourth = takes(3) || first_cut_unless_overlap;
   // raised when the first-cut start must end: a stop, or the overlap that
-  // makes it the relaxed start's turn (first_cut_unless_overlap)
+  // makes it the relaxed start's turn (first_cut_unless_overlap), which
+  // drops its run
   std::atomic<bool> fourth_stop(false);
-  bool overlapped = false;
+  bool fourth_dropped = false;
   // The hold-price start: the first's setup, with a dual step that holds the
   // price of distortion while a cut pays at it (hand1: 13.67 -> 10.08).
   // Copies of solver traits share their solver (as CGAL's do): the second
@@ -173,7 +174,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       // (before the hand-off: the relaxed start's lane reads it then)
       if(first_cut_unless_overlap)
       {
-        overlapped = true;
+        fourth_dropped = true;
         fourth_stop.store(true);
       }
       free_run.give(std::move(forked));
@@ -195,21 +196,10 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   Visitor fourth_visitor(nullptr, fourth_stop, &budget, false,
                          first_cut_unless_overlap ? internal::first_cut_beside_first_share : 1.);
   bool fourth_time_limited = false;
-  // (the initial seams, as the other starts read them)
-  auto initial_fourth_seams = [&] {
-    for(auto e : edges(tm))
-    {
-      bool seam = false;
-      if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
-        seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
-      put(*fourth_seam_holder, e, seam);
-    }
-  };
   if(has_fourth)
   {
     fourth_uv_holder.emplace(get(CGAL::dynamic_halfedge_property_t<Uv>(), tm));
     fourth_seam_holder.emplace(get(CGAL::dynamic_edge_property_t<bool>(), tm));
-    initial_fourth_seams();
   }
   auto run_first = [&] {
     // (even on an exception)
@@ -274,6 +264,17 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       if(fourth_stop.load()) return;
       auto& fourth_uv = *fourth_uv_holder;
       auto& fourth_seam = *fourth_seam_holder;
+      // (from its beginning, also when it runs again after a dropped run: the
+      // initial seams, as the other starts read them)
+      fourth = Optimization_result();
+      fourth_visitor.restart();
+      for(auto e : edges(tm))
+      {
+        bool seam = false;
+        if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+          seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
+        put(fourth_seam, e, seam);
+      }
       const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                         get_const_property_map(CGAL::vertex_point, tm));
       const Energy energy = choose_parameter(get_parameter(np, internal_np::energy), Symmetric_Dirichlet_energy());
@@ -311,7 +312,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
     others = { [&] {
       run_fourth();
       run_third();
-      if(!overlapped || feasible(third)) return;
+      if(!fourth_dropped || feasible(third)) return;
       // (lowered before `stop` is read: a stop raises `stop` before it
       // raises `fourth_stop` again)
       fourth_stop.store(false);
@@ -320,10 +321,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
         fourth_stop.store(true);
         return;
       }
-      overlapped = false;
-      fourth = Optimization_result();
-      initial_fourth_seams();
-      fourth_visitor.restart();
+      fourth_dropped = false;
       run_fourth();
     } };
   auto run_rest = [&] { for(std::size_t i = 1; i < others.size(); ++i) others[i](); };
@@ -369,7 +367,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   };
   bool third_kept = has_third && !stop.load() && compete(third, 2);
   // (a first-cut start dropped at the overlap competes with nothing)
-  const bool fourth_counts = has_fourth && !overlapped;
+  const bool fourth_counts = has_fourth && !fourth_dropped;
   const bool fourth_kept = fourth_counts && !stop.load() && compete(fourth, 3);
   if(fourth_kept) third_kept = false;
   // the time limit that cut any start short cut the call short: the kept
