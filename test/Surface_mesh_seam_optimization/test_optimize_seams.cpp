@@ -624,6 +624,67 @@ BOOST_AUTO_TEST_CASE(straightening_detours_shortens_the_seams_within_the_bound)
   BOOST_TEST(se_on < 0.97 * se_off);
 }
 
+namespace {
+
+// The alternation with its descent open to the test.
+template <typename Energy, typename SolverTraits, typename Visitor>
+struct Open_alternation : SMSO::internal::Alternation<Energy, SolverTraits, Visitor>
+{
+  typedef SMSO::internal::Alternation<Energy, SolverTraits, Visitor> Base;
+  using Base::Base;
+  template <typename Enough>
+  SMSO::Error_code descend_from_start(const Enough& enough)
+  {
+    if(!this->m_newton.rebuild_pattern()) return SMSO::ERROR_LINEAR_SOLVER;
+    return this->descend(enough);
+  }
+  SMSO::Error_code descend_on() { return this->descend(); }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(a_descent_ended_early_resumes_to_the_same_stationary_point)
+{
+  // The zip of a straightening round descends only until its next merge can
+  // be placed: descend(enough) must stop right after the iteration that
+  // satisfies it, and going on from there must be the full descent.
+  typedef SMSO::Symmetric_Dirichlet_energy Energy;
+  typedef Open_alternation<Energy, SMSO::Eigen_simplicial_ldlt_traits, SMSO::Default_seam_optimization_visitor> Open;
+  Surface_mesh sm;
+  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/planck_s1.obj", sm));
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::vector<double> weight;
+  SMSO::internal::Alternating_settings settings;
+  std::string message;
+  BOOST_REQUIRE(SMSO::internal::setup_seam_optimization(sm, uv, SMSO::parameters::default_values(), Energy(), cm, copy,
+                                                        weight, settings, message) == SMSO::OK);
+  settings.bijective = false;
+  SMSO::Default_seam_optimization_visitor visitor;
+  SMSO::internal::Cut_mesh full_cm = cm, early_cm = cm;
+  Open full(full_cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
+  Open early(early_cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
+  const double e0 = full.distortion();
+
+  BOOST_TEST(full.descend_from_start([] { return false; }) == SMSO::OK);
+  BOOST_TEST_MESSAGE("planck_s1 initial map: E_SD " << e0 << ", stationary " << full.distortion() << " after "
+                     << full.iterations() << " Newton iterations");
+  BOOST_REQUIRE(full.iterations() > 3u);
+
+  int calls = 0;
+  BOOST_TEST(early.descend_from_start([&calls] { return ++calls == 3; }) == SMSO::OK);
+  BOOST_TEST(calls == 3);
+  BOOST_TEST(early.iterations() == 3u);
+  const double e3 = early.distortion();
+  BOOST_TEST(e3 < e0);
+  BOOST_TEST(e3 > full.distortion());
+  BOOST_TEST(early.descend_on() == SMSO::OK);
+  BOOST_TEST(early.iterations() == full.iterations());
+  BOOST_TEST(early.distortion() == full.distortion());
+  BOOST_TEST((early_cm.uv == full_cm.uv));
+}
+
 // ---------------------------------------------------------------------------
 // Regional seam preferences (seam_cost_map, vertex_seam_cost_map)
 

@@ -319,8 +319,8 @@ private:
     return false;
   }
 
-  // Zips the seam path (halfedges towards its tip) from the tip, with a
-  // descent where a merge cannot be placed; `zipped` merges done.
+  // Zips the seam path (halfedges towards its tip) from the tip, with
+  // Newton iterations where a merge cannot be placed; `zipped` merges done.
   Error_code zip(const std::vector<int>& seam, std::size_t& zipped)
   {
     zipped = 0;
@@ -330,18 +330,21 @@ private:
       bool merged = false;
       for(int attempt = 0; attempt < 2 && !merged && !m_cancelled; ++attempt)
       {
+        bool can = false;
+        auto place = [&] {
+          Phase_timer timer(m_timings.topology);
+          return can = m_topology.merge_at(seam[i], op);
+        };
         if(attempt == 1)
         {
           m_tips.clear();
           if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
-          const Error_code status = descend();
+          // only until the merge can be placed (not to a stationary point:
+          // the alternation descends after the zip)
+          const Error_code status = descend(place);
           if(status != OK) return status;
         }
-        bool can = false;
-        {
-          Phase_timer timer(m_timings.topology);
-          can = m_topology.merge_at(seam[i], op);
-        }
+        if(!can) place();
         merged = can && apply(op);
       }
       if(m_cancelled) return WARNING_CANCELLED;

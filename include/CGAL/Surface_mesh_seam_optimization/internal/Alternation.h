@@ -263,7 +263,11 @@ protected:
 
   // Newton to a stationary point; between iterations, the seams created by
   // the last split are extended from their tips while that beats Newton.
-  Error_code descend()
+  Error_code descend() { return descend([] { return false; }); }
+
+  // The same, ended early (OK) after the first iteration that leaves `enough()`.
+  template <typename Enough>
+  Error_code descend(const Enough& enough)
   {
     for(;;)
     {
@@ -279,6 +283,7 @@ protected:
       }
       m_rebuilt_at_convergence = false;
       if(!m_visitor.on_iteration(progress())) return WARNING_CANCELLED;
+      if(enough()) { m_tips.clear(); return OK; }
       const bool propagated = propagate(s == NEWTON_CONVERGED ? 0. : (1 - m_lambda) * m_newton.last_decrease());
       if(m_cancelled) return WARNING_CANCELLED;
       if(s == NEWTON_CONVERGED && !propagated) { m_tips.clear(); return OK; }
