@@ -584,22 +584,40 @@ BOOST_AUTO_TEST_CASE(moving_an_ear_across_a_seam_shortens_it_by_the_stencils_fig
   BOOST_TEST(ears > 0u);
 }
 
+namespace {
+
+// A test mesh set up for the core loop as optimize_seams() does (default parameters).
+struct Core_setup
+{
+  Surface_mesh sm;
+  SMSO::internal::Cut_mesh cm;
+  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
+  std::vector<double> weight;
+  SMSO::internal::Alternating_settings settings;
+
+  explicit Core_setup(const std::string& file)
+  {
+    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/" + file, sm));
+    UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+    std::string message;
+    BOOST_REQUIRE(SMSO::internal::setup_seam_optimization(sm, uv, SMSO::parameters::default_values(),
+                                                          SMSO::Symmetric_Dirichlet_energy(), cm, copy, weight,
+                                                          settings, message) == SMSO::OK);
+  }
+};
+
+} // namespace
+
 BOOST_AUTO_TEST_CASE(straightening_detours_shortens_the_seams_within_the_bound)
 {
   // planck_s1 (775 faces, OptCuts data): its seams grown edge by edge wind;
   // the rounds that replace a detour by its shortcut find shorter ones.
   typedef SMSO::Symmetric_Dirichlet_energy Energy;
   auto solve = [](double detour_ratio, double& e_sd, double& e_se, std::size_t& overlaps, std::string& invariants) {
-    Surface_mesh sm;
-    BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/planck_s1.obj", sm));
-    UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-    SMSO::internal::Cut_mesh cm;
-    SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-    std::vector<double> weight;
-    SMSO::internal::Alternating_settings settings;
-    std::string message;
-    BOOST_REQUIRE(SMSO::internal::setup_seam_optimization(sm, uv, SMSO::parameters::default_values(), Energy(), cm,
-                                                          copy, weight, settings, message) == SMSO::OK);
+    Core_setup setup("planck_s1.obj");
+    SMSO::internal::Cut_mesh& cm = setup.cm;
+    const std::vector<double>& weight = setup.weight;
+    SMSO::internal::Alternating_settings settings = setup.settings;
     settings.detour_ratio = detour_ratio;
     SMSO::Default_seam_optimization_visitor visitor;
     SMSO::internal::Alternating_optimization<Energy, SMSO::Eigen_simplicial_ldlt_traits,
@@ -650,19 +668,12 @@ BOOST_AUTO_TEST_CASE(a_descent_ended_early_resumes_to_the_same_stationary_point)
   // satisfies it, and going on from there must be the full descent.
   typedef SMSO::Symmetric_Dirichlet_energy Energy;
   typedef Open_alternation<Energy, SMSO::Eigen_simplicial_ldlt_traits, SMSO::Default_seam_optimization_visitor> Open;
-  Surface_mesh sm;
-  BOOST_REQUIRE(CGAL::IO::read_polygon_mesh(std::string(SMSO_TEST_DATA_DIR) + "/planck_s1.obj", sm));
-  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  SMSO::internal::Cut_mesh cm;
-  SMSO::internal::Face_graph_copy<Surface_mesh> copy;
-  std::vector<double> weight;
-  SMSO::internal::Alternating_settings settings;
-  std::string message;
-  BOOST_REQUIRE(SMSO::internal::setup_seam_optimization(sm, uv, SMSO::parameters::default_values(), Energy(), cm, copy,
-                                                        weight, settings, message) == SMSO::OK);
+  Core_setup setup("planck_s1.obj");
+  const std::vector<double>& weight = setup.weight;
+  SMSO::internal::Alternating_settings settings = setup.settings;
   settings.bijective = false;
   SMSO::Default_seam_optimization_visitor visitor;
-  SMSO::internal::Cut_mesh full_cm = cm, early_cm = cm;
+  SMSO::internal::Cut_mesh full_cm = setup.cm, early_cm = setup.cm;
   Open full(full_cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
   Open early(early_cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
   const double e0 = full.distortion();
