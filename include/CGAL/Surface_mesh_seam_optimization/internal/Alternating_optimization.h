@@ -340,11 +340,12 @@ private:
           m_tips.clear();
           if(!m_newton.rebuild_pattern()) return ERROR_LINEAR_SOLVER;
           // only until the merge can be placed (not to a stationary point:
-          // the alternation descends after the zip)
+          // the alternation descends after the zip); a descent that ends
+          // otherwise ended at a stationary point, after its last try
           const Error_code status = descend(place);
           if(status != OK) return status;
         }
-        if(!can) place();
+        else place();
         merged = can && apply(op);
       }
       if(m_cancelled) return WARNING_CANCELLED;
