@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Sparse_solver_traits.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Block_ldlt.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Face_graph_copy.h>
@@ -385,6 +386,7 @@ BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
   SMSO::Default_sparse_solver_traits small; // default threshold: far above 1800 unknowns
   BOOST_REQUIRE(small.analyze_pattern(A) && small.factorize(A) && small.solve(b, x_small));
   BOOST_TEST(!small.uses_cholmod());
+  BOOST_TEST(!small.uses_blocks()); // (u and v are not coupled: not made of 2x2 blocks)
   BOOST_TEST((x_small - x_ldlt).norm() == 0.); // the very same factorization
 
   SMSO::Default_sparse_solver_traits large(1000);
@@ -418,6 +420,97 @@ BOOST_AUTO_TEST_CASE(default_solver_chooses_by_size_and_solves_alike)
   BOOST_REQUIRE(tiny.analyze_pattern(M) && tiny.factorize(M) && tiny.solve(c, y));
   BOOST_TEST(!tiny.uses_cholmod()); // fell back for this pattern
   BOOST_TEST((M.selfadjointView<Eigen::Lower>() * y - c).norm() <= 1e-12);
+}
+
+// A Hessian made of 2x2 blocks (each triangle's 6x6 positive semi-definite
+// matrix on the two coordinates of its three vertices): the default solver
+// factorizes it by blocks, with the solution of the scalar LDL^T up to
+// rounding; again after a new pattern; an indefinite block diagonal is
+// factorized too; a singular one is refused, with no result.
+BOOST_AUTO_TEST_CASE(block_ldlt_solves_hessians_of_uv_maps_as_the_scalar_ldlt)
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  auto hessian = [](int n, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> g(0., 1.);
+    std::vector<Eigen::Triplet<double> > t;
+    auto element = [&](const int v[3]) {
+      Eigen::Matrix<double, 6, 4> G;
+      for(int i = 0; i < 6; ++i)
+        for(int j = 0; j < 4; ++j) G(i, j) = g(rng);
+      const Eigen::Matrix<double, 6, 6> M = G * G.transpose(); // rank 4, as a projected element Hessian
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+          for(int c = 0; c < 2; ++c)
+            for(int d = 0; d < 2; ++d)
+              if(2 * v[a] + c >= 2 * v[b] + d) t.emplace_back(2 * v[a] + c, 2 * v[b] + d, M(2 * a + c, 2 * b + d));
+    };
+    for(int i = 0; i + 1 < n; ++i)
+      for(int j = 0; j + 1 < n; ++j)
+      {
+        const int v0 = i * n + j, v1 = v0 + 1, v2 = v0 + n, v3 = v2 + 1;
+        const int f0[3] = { v0, v1, v3 }, f1[3] = { v0, v3, v2 };
+        element(f0);
+        element(f1);
+      }
+    for(int k = 0; k < 2 * n * n; ++k) t.emplace_back(k, k, 1e-3);
+    Matrix A(2 * n * n, 2 * n * n);
+    A.setFromTriplets(t.begin(), t.end());
+    A.makeCompressed();
+    return A;
+  };
+  SMSO::Default_sparse_solver_traits blocks; // (default threshold: far above these sizes)
+  for(const int n : { 24, 17 }) // (the second: a new pattern for the same solver)
+  {
+    const Matrix A = hessian(n, unsigned(n));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1., 1.);
+    Eigen::VectorXd x_blocks, x_scalar;
+    BOOST_REQUIRE(blocks.analyze_pattern(A) && blocks.factorize(A) && blocks.solve(b, x_blocks));
+    BOOST_TEST(blocks.uses_blocks());
+    SMSO::Eigen_simplicial_ldlt_traits scalar;
+    BOOST_REQUIRE(scalar.analyze_pattern(A) && scalar.factorize(A) && scalar.solve(b, x_scalar));
+    BOOST_TEST((x_blocks - x_scalar).norm() <= 1e-9 * x_scalar.norm());
+    BOOST_TEST((A.selfadjointView<Eigen::Lower>() * x_blocks - b).norm() <= 1e-9 * b.norm());
+    // the same pattern with other values: factorized again without a new analysis
+    Matrix B = hessian(n, unsigned(n) + 100);
+    BOOST_REQUIRE(blocks.factorize(B) && blocks.solve(b, x_blocks));
+    BOOST_TEST((B.selfadjointView<Eigen::Lower>() * x_blocks - b).norm() <= 1e-9 * b.norm());
+    // the factor by blocks has the fill of the scalar factor (AMD on the vertices)
+    SMSO::internal::Block_ldlt factor;
+    BOOST_REQUIRE(factor.analyze(A));
+    Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(A);
+    BOOST_TEST(double(4 * factor.factor_blocks() + A.rows() / 2) <= 1.1 * double(eigen.matrixL().nestedExpression().nonZeros()));
+  }
+  // indefinite 2x2 diagonal blocks (LDL^T, not Cholesky), coupled
+  Matrix M(4, 4);
+  M.insert(0, 0) = 2.; M.insert(1, 0) = 0.5; M.insert(1, 1) = -1.;
+  M.insert(2, 0) = 0.1; M.insert(3, 0) = 0.2; M.insert(2, 1) = 0.3; M.insert(3, 1) = 0.4;
+  M.insert(2, 2) = 3.; M.insert(3, 2) = -0.5; M.insert(3, 3) = 1.;
+  M.makeCompressed();
+  Eigen::VectorXd c(4), y;
+  c << 1., 2., 3., 4.;
+  SMSO::Default_sparse_solver_traits indefinite;
+  BOOST_REQUIRE(indefinite.analyze_pattern(M) && indefinite.factorize(M) && indefinite.solve(c, y));
+  BOOST_TEST(indefinite.uses_blocks());
+  BOOST_TEST((M.selfadjointView<Eigen::Lower>() * y - c).norm() <= 1e-12);
+  // a singular block: refused (the scalar LDL^T it falls back to refuses it too)
+  M.coeffRef(0, 0) = 0.; M.coeffRef(1, 0) = 0.; M.coeffRef(1, 1) = 0.;
+  M.coeffRef(2, 0) = 0.; M.coeffRef(3, 0) = 0.; M.coeffRef(2, 1) = 0.; M.coeffRef(3, 1) = 0.;
+  SMSO::internal::Block_ldlt singular;
+  BOOST_REQUIRE(singular.analyze(M));
+  BOOST_TEST(!singular.factorize(M));
+  SMSO::Default_sparse_solver_traits refused;
+  BOOST_TEST(!(refused.analyze_pattern(M) && refused.factorize(M)));
+  // not made of full blocks (a missing (1, 0) entry): by scalars
+  Matrix D(4, 4);
+  for(int k = 0; k < 4; ++k) D.insert(k, k) = 1. + k;
+  D.makeCompressed();
+  SMSO::internal::Block_ldlt not_blocks;
+  BOOST_TEST(!not_blocks.analyze(D));
+  SMSO::Default_sparse_solver_traits scalars;
+  BOOST_REQUIRE(scalars.analyze_pattern(D) && scalars.factorize(D) && scalars.solve(c, y));
+  BOOST_TEST(!scalars.uses_blocks());
+  BOOST_TEST(y[3] == 1.);
 }
 
 #ifdef __unix__
