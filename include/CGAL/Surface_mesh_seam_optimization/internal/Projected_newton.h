@@ -21,6 +21,8 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Stale_factor_cg.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -159,16 +161,36 @@ public:
     build_lower_pattern(ne, ndof);
     int dof[6];
     m_entry.resize(21 * ne);
+    const int* outer = m_H.outerIndexPtr();
+    const int* inner = m_H.innerIndexPtr();
     for(std::size_t f = 0; f < ne; ++f)
     {
       local_dofs(f, dof);
+      // where the rows of vertex a start in the two columns of vertex b (a
+      // not before b): one search per pair of vertices, not per entry
+      int base[3][3][2];
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b)
+        {
+          const int R = dof[2*a] / 2, C = dof[2*b] / 2;
+          if(R < C) continue;
+          int* at = base[a][b];
+          if(R == C) { at[0] = outer[2*C]; at[1] = outer[2*C + 1] - 1; continue; }
+          at[1] = int(std::lower_bound(inner + outer[2*C + 1], inner + outer[2*C + 2], 2 * R) - inner);
+          at[0] = at[1] - outer[2*C + 1] + outer[2*C] + 1; // (column 2C has row 2C more)
+        }
       int k = 0;
       for(int p = 0; p < 6; ++p)
         for(int q = 0; q <= p; ++q)
-          m_entry[21*f + k++] = entry_index((std::max)(dof[p], dof[q]), (std::min)(dof[p], dof[q]));
+        {
+          const int row = (std::max)(dof[p], dof[q]), col = (std::min)(dof[p], dof[q]);
+          const int a = dof[p] >= dof[q] ? p / 2 : q / 2, b = dof[p] >= dof[q] ? q / 2 : p / 2;
+          m_entry[21*f + k++] = base[a][b][col % 2] + row % 2;
+          CGAL_assertion(m_entry[21*f + k - 1] == entry_index(row, col));
+        }
     }
     m_diagonal.resize(ndof);
-    for(int d = 0; d < ndof; ++d) m_diagonal[d] = entry_index(d, d);
+    for(int d = 0; d < ndof; ++d) m_diagonal[d] = outer[d]; // (each column starts at its diagonal)
     m_gradient.resize(ndof);
     load();
     m_energy_value = total_energy(m_cm, m_energy, m_x.data());
