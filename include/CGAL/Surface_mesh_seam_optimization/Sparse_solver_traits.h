@@ -215,10 +215,12 @@ typedef Eigen_sparse_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatr
 /// The default: below a threshold of unknowns, a simplicial LDL^T by 2x2
 /// blocks where the matrix is made of them (the Hessians of UV maps: the two
 /// coordinates of a vertex with the two of each neighbour; the same fill as
-/// by scalars, 2.2-2.5 times faster factorizations than `SimplicialLDLT` at
-/// 5k-20k unknowns), else `Eigen_simplicial_ldlt_traits`; above it CHOLMOD's supernodal Cholesky factorization
-/// (BLAS level 3: measured 1.4x faster at 48k faces, 2.3x at 97k and 5.6x at
-/// 386k with OpenBLAS; below the threshold, with two starts side by side in
+/// by scalars, 2.5-4 times faster factorizations than `SimplicialLDLT` at
+/// 10k-48k unknowns), else `Eigen_simplicial_ldlt_traits`; above it CHOLMOD's supernodal Cholesky factorization
+/// (BLAS level 3: measured 1.4x faster than the scalar LDL^T at 48k faces,
+/// 2.3x at 97k and 5.6x at 386k with OpenBLAS; the block LDL^T is faster than
+/// it up to about 97k unknowns, 2x at 48k, so the threshold is conservative
+/// for the Hessians; below the threshold, with two starts side by side in
 /// the seam loop, it was no faster and took more memory), when the package
 /// is built with CHOLMOD (see `Cholmod_traits`); without it, always the
 /// former. The choice depends on the number of unknowns and the pattern

@@ -5,8 +5,9 @@
 // eliminated together. The Hessians of the package couple the two
 // coordinates of every vertex with the two of each neighbour, so the factor
 // has the same fill by blocks as by scalars, and the block version does one
-// index lookup per four entries: 2.2-2.5 times faster numeric factorizations
-// than Eigen's SimplicialLDLT at 5k-20k unknowns (notes/issue20).
+// index lookup per four entries (and SSE2 arithmetic): 2.5-4 times faster
+// numeric factorizations than Eigen's SimplicialLDLT at 10k-48k unknowns
+// (notes/issue20/session_2026-12-01).
 
 #ifndef CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_BLOCK_LDLT_H
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_BLOCK_LDLT_H
