@@ -481,6 +481,22 @@ BOOST_AUTO_TEST_CASE(block_ldlt_solves_hessians_of_uv_maps_as_the_scalar_ldlt)
     Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(A);
     BOOST_TEST(double(4 * factor.factor_blocks() + A.rows() / 2) <= 1.1 * double(eigen.matrixL().nestedExpression().nonZeros()));
   }
+  // the thresholds: CHOLMOD from `threshold` unknowns for other patterns,
+  // from `block_threshold` for 2x2 blocks
+  {
+    const Matrix A = hessian(24, 7u); // 1152 unknowns
+    SMSO::Default_sparse_solver_traits scalar_threshold(1000);
+    BOOST_REQUIRE(scalar_threshold.analyze_pattern(A));
+    BOOST_TEST(scalar_threshold.uses_blocks());
+    BOOST_TEST(!scalar_threshold.uses_cholmod());
+    SMSO::Default_sparse_solver_traits block_threshold(1000, false, 1000);
+    BOOST_REQUIRE(block_threshold.analyze_pattern(A));
+    BOOST_TEST(!block_threshold.uses_blocks());
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+    BOOST_TEST(block_threshold.uses_cholmod());
+#endif
+    BOOST_TEST(SMSO::internal::Block_ldlt::made_of_blocks(A));
+  }
   // indefinite 2x2 diagonal blocks (LDL^T, not Cholesky), coupled
   Matrix M(4, 4);
   M.insert(0, 0) = 2.; M.insert(1, 0) = 0.5; M.insert(1, 1) = -1.;
@@ -506,6 +522,7 @@ BOOST_AUTO_TEST_CASE(block_ldlt_solves_hessians_of_uv_maps_as_the_scalar_ldlt)
   for(int k = 0; k < 4; ++k) D.insert(k, k) = 1. + k;
   D.makeCompressed();
   SMSO::internal::Block_ldlt not_blocks;
+  BOOST_TEST(!SMSO::internal::Block_ldlt::made_of_blocks(D));
   BOOST_TEST(!not_blocks.analyze(D));
   SMSO::Default_sparse_solver_traits scalars;
   BOOST_REQUIRE(scalars.analyze_pattern(D) && scalars.factorize(D) && scalars.solve(c, y));

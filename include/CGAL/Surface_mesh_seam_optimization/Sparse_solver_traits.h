@@ -216,17 +216,18 @@ typedef Eigen_sparse_solver_traits<Eigen::CholmodDecomposition<Eigen::SparseMatr
 /// blocks where the matrix is made of them (the Hessians of UV maps: the two
 /// coordinates of a vertex with the two of each neighbour; the same fill as
 /// by scalars, 2.5-4 times faster factorizations than `SimplicialLDLT` at
-/// 10k-48k unknowns), else `Eigen_simplicial_ldlt_traits`; above it CHOLMOD's supernodal Cholesky factorization
-/// (BLAS level 3: measured 1.4x faster than the scalar LDL^T at 48k faces,
-/// 2.3x at 97k and 5.6x at 386k with OpenBLAS; the block LDL^T is faster than
-/// it up to about 97k unknowns, 2x at 48k, so the threshold is conservative
-/// for the Hessians; below the threshold, with two starts side by side in
-/// the seam loop, it was no faster and took more memory), when the package
-/// is built with CHOLMOD (see `Cholmod_traits`); without it, always the
-/// former. The choice depends on the number of unknowns and the pattern
-/// alone (the result is deterministic), and a supernodal or block
-/// factorization that fails (a matrix that is positive semi-definite only up
-/// to rounding) is done again by the scalar simplicial LDL^T of the same matrix.
+/// 10k-48k unknowns), else `Eigen_simplicial_ldlt_traits`; above it CHOLMOD's
+/// supernodal Cholesky factorization (BLAS level 3: measured 1.4x faster than
+/// the scalar LDL^T at 48k faces, 2.3x at 97k and 5.6x at 386k with
+/// OpenBLAS), when the package is built with CHOLMOD (see `Cholmod_traits`);
+/// without it, always the former. The threshold is 65536 unknowns for a
+/// matrix made of 2x2 blocks (the block factorization is faster than
+/// CHOLMOD's up to about 97k unknowns with AMD, 70k against nested
+/// dissection) and 40000 for others. The choice depends on the number of
+/// unknowns and the pattern alone (the result is deterministic), and a
+/// supernodal or block factorization that fails (a matrix that is positive
+/// semi-definite only up to rounding) is done again by the scalar simplicial
+/// LDL^T of the same matrix.
 /// \cgalModels `SparseSolverTraits`
 class Default_sparse_solver_traits
 {
@@ -236,8 +237,13 @@ public:
 
   /// the default `threshold`
   static constexpr Eigen::Index default_threshold = 40000;
+  /// the default `block_threshold`: the factorization by blocks is faster
+  /// than CHOLMOD's up to about 97k unknowns with AMD (2x at 48k) and about
+  /// 70k against nested dissection (notes/issue20/session_2026-12-01)
+  static constexpr Eigen::Index default_block_threshold = 65536;
 
-  /// `threshold`: the number of unknowns from which CHOLMOD is used;
+  /// `threshold`: the number of unknowns from which CHOLMOD is used
+  /// (`block_threshold` for a matrix made of 2x2 blocks);
   /// `nested_dissection`: CHOLMOD orders the unknowns by nested dissection
   /// (METIS) instead of its default (AMD), for half the floating-point
   /// operations per factorization at about 100k unknowns but a symbolic
@@ -245,8 +251,9 @@ public:
   /// factorizations (`minimize_distortion()` sets it), not when it changes
   /// every few iterations (the seam loop).
   explicit Default_sparse_solver_traits(Eigen::Index threshold = default_threshold,
-                                        bool nested_dissection = false)
-    : m_threshold(threshold)
+                                        bool nested_dissection = false,
+                                        Eigen::Index block_threshold = default_block_threshold)
+    : m_threshold(threshold), m_block_threshold(block_threshold)
   {
 #ifdef CGAL_SMSO_HAS_CHOLMOD
     cholmod_common& c = m_supernodal.eigen_solver().cholmod();
@@ -280,12 +287,13 @@ public:
   {
     m_fallback = false;
     m_blocks = false;
+    // (the Hessians of UV maps; other patterns by scalars)
+    const bool blocks = internal::Block_ldlt::made_of_blocks(A);
 #ifdef CGAL_SMSO_HAS_CHOLMOD
-    m_large = A.rows() >= m_threshold;
+    m_large = A.rows() >= (blocks ? m_block_threshold : m_threshold);
     if(m_large) return m_supernodal.analyze_pattern(A);
 #endif
-    // (the Hessians of UV maps; other patterns by scalars)
-    m_blocks = m_block->analyze(A);
+    m_blocks = blocks && m_block->analyze(A);
     return m_blocks || m_ldlt.analyze_pattern(A);
   }
   bool factorize(const Matrix& A)
@@ -312,7 +320,7 @@ public:
   }
 
 private:
-  Eigen::Index m_threshold;
+  Eigen::Index m_threshold, m_block_threshold;
   bool m_large = false, m_fallback = false, m_blocks = false;
   Eigen_simplicial_ldlt_traits m_ldlt;
   // (shared by copies, as the factorizations of the other members are)

@@ -36,8 +36,34 @@ class Block_ldlt
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
 
-  // false if A (its lower triangle is read) is not made of full 2x2 blocks:
-  // odd size, or a block of which some entry of the lower triangle is not stored
+  // whether A (compressed; its lower triangle is read) is made of full 2x2
+  // blocks: even size, and every block with an entry in the lower triangle
+  // has all its entries of the lower triangle stored
+  static bool made_of_blocks(const Matrix& A)
+  {
+    if(!A.isCompressed() || A.rows() != A.cols() || A.rows() % 2 != 0 || A.rows() == 0) return false;
+    const int n = int(A.rows() / 2);
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    std::vector<int> mark(std::size_t(n), -1), count(std::size_t(n), 0), rows;
+    for(int C = 0; C < n; ++C)
+    {
+      rows.clear();
+      for(int c = 2 * C; c < 2 * C + 2; ++c)
+        for(int p = outer[c]; p < outer[c + 1]; ++p)
+        {
+          if(inner[p] < c) continue;
+          const int R = inner[p] / 2;
+          if(mark[std::size_t(R)] != C) { mark[std::size_t(R)] = C; count[std::size_t(R)] = 0; rows.push_back(R); }
+          ++count[std::size_t(R)];
+        }
+      for(const int R : rows)
+        if(count[std::size_t(R)] != (R == C ? 3 : 4)) return false;
+    }
+    return true;
+  }
+
+  // false if A is not made of full 2x2 blocks (see made_of_blocks())
   bool analyze(const Matrix& A)
   {
     m_n = 0;
