@@ -43,20 +43,10 @@ public:
   {
     if(!A.isCompressed() || A.rows() != A.cols() || A.rows() % 2 != 0 || A.rows() == 0) return false;
     const int n = int(A.rows() / 2);
-    const int* outer = A.outerIndexPtr();
-    const int* inner = A.innerIndexPtr();
     std::vector<int> mark(std::size_t(n), -1), count(std::size_t(n), 0), rows;
     for(int C = 0; C < n; ++C)
     {
-      rows.clear();
-      for(int c = 2 * C; c < 2 * C + 2; ++c)
-        for(int p = outer[c]; p < outer[c + 1]; ++p)
-        {
-          if(inner[p] < c) continue;
-          const int R = inner[p] / 2;
-          if(mark[std::size_t(R)] != C) { mark[std::size_t(R)] = C; count[std::size_t(R)] = 0; rows.push_back(R); }
-          ++count[std::size_t(R)];
-        }
+      block_column(A, C, mark, count, rows);
       for(const int R : rows)
         if(count[std::size_t(R)] != (R == C ? 3 : 4)) return false;
     }
@@ -67,31 +57,19 @@ public:
   bool analyze(const Matrix& A)
   {
     m_n = 0;
-    if(!A.isCompressed() || A.rows() != A.cols() || A.rows() % 2 != 0 || A.rows() == 0) return false;
+    if(!made_of_blocks(A)) return false;
     const int n = int(A.rows() / 2);
     const int* outer = A.outerIndexPtr();
     const int* inner = A.innerIndexPtr();
-    // the graph of blocks (lower triangle), each block checked for all its entries
+    // the graph of blocks (lower triangle)
     std::vector<int> mark(std::size_t(n), -1), count(std::size_t(n), 0), rows;
     std::vector<int> graph_outer(std::size_t(n) + 1, 0), graph_inner;
     graph_inner.reserve(std::size_t(A.nonZeros()) / 3 + std::size_t(n));
     for(int C = 0; C < n; ++C)
     {
-      rows.clear();
-      for(int c = 2 * C; c < 2 * C + 2; ++c)
-        for(int p = outer[c]; p < outer[c + 1]; ++p)
-        {
-          if(inner[p] < c) continue;
-          const int R = inner[p] / 2;
-          if(mark[R] != C) { mark[R] = C; count[R] = 0; rows.push_back(R); }
-          ++count[R];
-        }
+      block_column(A, C, mark, count, rows);
       std::sort(rows.begin(), rows.end());
-      for(const int R : rows)
-      {
-        if(count[R] != (R == C ? 3 : 4)) return false;
-        graph_inner.push_back(R);
-      }
+      graph_inner.insert(graph_inner.end(), rows.begin(), rows.end());
       graph_outer[std::size_t(C) + 1] = int(graph_inner.size());
     }
     Matrix G(n, n);
@@ -315,6 +293,24 @@ public:
   std::size_t factor_blocks() const { return m_li.size(); }
 
 private:
+  // the block rows R >= C of block column C, each once, and how many entries
+  // of the lower triangle each has stored (in count)
+  static void block_column(const Matrix& A, int C, std::vector<int>& mark, std::vector<int>& count,
+                           std::vector<int>& rows)
+  {
+    const int* outer = A.outerIndexPtr();
+    const int* inner = A.innerIndexPtr();
+    rows.clear();
+    for(int c = 2 * C; c < 2 * C + 2; ++c)
+      for(int p = outer[c]; p < outer[c + 1]; ++p)
+      {
+        if(inner[p] < c) continue;
+        const int R = inner[p] / 2;
+        if(mark[std::size_t(R)] != C) { mark[std::size_t(R)] = C; count[std::size_t(R)] = 0; rows.push_back(R); }
+        ++count[std::size_t(R)];
+      }
+  }
+
   int m_n = 0; // vertices (blocks per side); 0: nothing analysed
   std::vector<int> m_perm; // new index of each vertex
   std::vector<int> m_up, m_ui; // upper triangle of the permuted graph (column starts, rows)
