@@ -293,7 +293,7 @@ public:
     m_large = A.rows() >= (blocks ? m_block_threshold : m_threshold);
     if(m_large) return m_supernodal.analyze_pattern(A);
 #endif
-    m_blocks = blocks && m_block->analyze(A);
+    m_blocks = blocks && m_block->analyze_blocks(A);
     return m_blocks || m_ldlt.analyze_pattern(A);
   }
   bool factorize(const Matrix& A)

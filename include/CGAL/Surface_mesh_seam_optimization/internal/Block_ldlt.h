@@ -57,7 +57,14 @@ public:
   bool analyze(const Matrix& A)
   {
     m_n = 0;
-    if(!made_of_blocks(A)) return false;
+    return made_of_blocks(A) && analyze_blocks(A);
+  }
+
+  // analyze() of an A known to be made of blocks (the caller asked
+  // made_of_blocks(), which scans the whole pattern)
+  bool analyze_blocks(const Matrix& A)
+  {
+    m_n = 0;
     const int n = int(A.rows() / 2);
     const int* outer = A.outerIndexPtr();
     const int* inner = A.innerIndexPtr();
