@@ -135,7 +135,9 @@ double optimize_stencil(const Cut_mesh& cm, const Energy& energy, Local_stencil&
       Hs.setFromTriplets(triplets.begin(), triplets.end());
       const double shift = 1e-12 * (1. + Hs.diagonal().cwiseAbs().maxCoeff());
       for(int i = 0; i < n; ++i) Hs.coeffRef(i, i) += shift;
-      sparse_solver.compute(Hs);
+      // (every iteration assembles the same pattern: one ordering, as compute() would find each time)
+      if(it == 0) sparse_solver.analyzePattern(Hs);
+      sparse_solver.factorize(Hs);
       p = sparse_solver.info() == Eigen::Success ? Eigen::VectorXd(sparse_solver.solve(-g)) : Eigen::VectorXd(-g);
     }
     else
