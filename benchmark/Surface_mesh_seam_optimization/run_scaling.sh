@@ -204,7 +204,7 @@ L.append("- meshes: lucy_o_f6032 to lucy_o_f48275 (shared data; each a topologic
 L.append(f"- distortion only: the initial map alone (circle boundary + Tutte through Surface_mesh_parameterization; "
          f"\"init s\"), then `minimize_distortion()` as a user calls it (\"dist. s\": the whole call, its own initial "
          f"map included, and from 16000 faces its start from coarser meshes), seams fixed (none), default solver "
-         f"(`Default_sparse_solver_traits`: SimplicialLDLT, CHOLMOD supernodal from 40000 unknowns): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
+         f"(`Default_sparse_solver_traits`: LDL^T by 2x2 blocks, CHOLMOD supernodal from 65536 unknowns): to convergence up to {converge_max_faces} faces, else {capped} Newton iterations "
          f"on the input mesh (\"capped\"; E_SD is then not the minimum); \"s/it\": the input mesh's Newton iterations alone "
          f"(assembly, factorization, line search)"
          + (f"; SimplicialLDLT: the same with `Eigen_simplicial_ldlt_traits`, {capped} iterations on every size" if chol else ""))
