@@ -9,8 +9,8 @@
 # - distortion only: the initial map (circle boundary + Tutte) timed alone,
 #   then minimize_distortion() as a user calls it (seams fixed: none; from
 #   16000 faces it starts from coarser meshes' maps), with the default
-#   solver (Default_sparse_solver_traits: SimplicialLDLT, CHOLMOD supernodal
-#   from 40000 unknowns): to convergence up to CONVERGE_MAX_FACES faces, else
+#   solver (Default_sparse_solver_traits: LDL^T by 2x2 blocks, CHOLMOD
+#   supernodal from 65536 unknowns): to convergence up to CONVERGE_MAX_FACES faces, else
 #   20 Newton iterations on the input mesh (the iteration count grows slowly
 #   with the size, the cost of an iteration is what scales); and 20 such
 #   iterations with Eigen_simplicial_ldlt_traits on every size, for comparison;
