@@ -288,12 +288,13 @@ public:
     m_fallback = false;
     m_blocks = false;
     // (the Hessians of UV maps; other patterns by scalars)
-    const bool blocks = internal::Block_ldlt::made_of_blocks(A);
+    std::vector<int> graph_outer, graph_inner;
+    const bool blocks = internal::Block_ldlt::block_graph(A, graph_outer, graph_inner);
 #ifdef CGAL_SMSO_HAS_CHOLMOD
     m_large = A.rows() >= (blocks ? m_block_threshold : m_threshold);
     if(m_large) return m_supernodal.analyze_pattern(A);
 #endif
-    m_blocks = blocks && m_block->analyze_blocks(A);
+    m_blocks = blocks && m_block->analyze_blocks(A, graph_outer, graph_inner);
     return m_blocks || m_ldlt.analyze_pattern(A);
   }
   bool factorize(const Matrix& A)

@@ -36,49 +36,53 @@ class Block_ldlt
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
 
-  // whether A (compressed; its lower triangle is read) is made of full 2x2
-  // blocks: even size, and every block with an entry in the lower triangle
-  // has all its entries of the lower triangle stored
-  static bool made_of_blocks(const Matrix& A)
+  // The graph of blocks of A (compressed; its lower triangle is read): the
+  // block rows R >= C of each block column C, sorted. False if A is not made
+  // of full 2x2 blocks: even size, and every block with an entry in the lower
+  // triangle has all its entries of the lower triangle stored.
+  static bool block_graph(const Matrix& A, std::vector<int>& graph_outer, std::vector<int>& graph_inner)
   {
     if(!A.isCompressed() || A.rows() != A.cols() || A.rows() % 2 != 0 || A.rows() == 0) return false;
     const int n = int(A.rows() / 2);
     std::vector<int> mark(std::size_t(n), -1), count(std::size_t(n), 0), rows;
+    graph_outer.assign(std::size_t(n) + 1, 0);
+    graph_inner.clear();
+    graph_inner.reserve(std::size_t(A.nonZeros()) / 3 + std::size_t(n));
     for(int C = 0; C < n; ++C)
     {
       block_column(A, C, mark, count, rows);
       for(const int R : rows)
         if(count[std::size_t(R)] != (R == C ? 3 : 4)) return false;
+      std::sort(rows.begin(), rows.end());
+      graph_inner.insert(graph_inner.end(), rows.begin(), rows.end());
+      graph_outer[std::size_t(C) + 1] = int(graph_inner.size());
     }
     return true;
   }
 
-  // false if A is not made of full 2x2 blocks (see made_of_blocks())
+  static bool made_of_blocks(const Matrix& A)
+  {
+    std::vector<int> graph_outer, graph_inner;
+    return block_graph(A, graph_outer, graph_inner);
+  }
+
+  // false if A is not made of full 2x2 blocks (see block_graph())
   bool analyze(const Matrix& A)
   {
     m_n = 0;
-    return made_of_blocks(A) && analyze_blocks(A);
+    std::vector<int> graph_outer, graph_inner;
+    return block_graph(A, graph_outer, graph_inner) && analyze_blocks(A, graph_outer, graph_inner);
   }
 
-  // analyze() of an A known to be made of blocks (the caller asked
-  // made_of_blocks(), which scans the whole pattern)
-  bool analyze_blocks(const Matrix& A)
+  // analyze() of an A whose graph of blocks the caller has (block_graph()
+  // scans the whole pattern: the caller that chose the solver by it passes
+  // it on rather than scanning again)
+  bool analyze_blocks(const Matrix& A, const std::vector<int>& graph_outer, const std::vector<int>& graph_inner)
   {
     m_n = 0;
     const int n = int(A.rows() / 2);
     const int* outer = A.outerIndexPtr();
     const int* inner = A.innerIndexPtr();
-    // the graph of blocks (lower triangle)
-    std::vector<int> mark(std::size_t(n), -1), count(std::size_t(n), 0), rows;
-    std::vector<int> graph_outer(std::size_t(n) + 1, 0), graph_inner;
-    graph_inner.reserve(std::size_t(A.nonZeros()) / 3 + std::size_t(n));
-    for(int C = 0; C < n; ++C)
-    {
-      block_column(A, C, mark, count, rows);
-      std::sort(rows.begin(), rows.end());
-      graph_inner.insert(graph_inner.end(), rows.begin(), rows.end());
-      graph_outer[std::size_t(C) + 1] = int(graph_inner.size());
-    }
     Matrix G(n, n);
     G.resizeNonZeros(Eigen::Index(graph_inner.size()));
     std::copy(graph_outer.begin(), graph_outer.end(), G.outerIndexPtr());
