@@ -21,7 +21,6 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_elements.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold_mesher.h>
@@ -35,10 +34,6 @@
 
 #include <boost/property_map/property_map.hpp>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
-#endif
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -47,7 +42,6 @@
 #include <iterator>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <random>
 #include <set>
 #include <string>
@@ -1087,91 +1081,6 @@ BOOST_AUTO_TEST_CASE(newton_with_stale_factors_reaches_the_same_minimum_with_few
   BOOST_TEST(std::abs(e_stale - e_exact) <= 1e-8 * e_exact);
   BOOST_TEST(f_stale < it_stale); // some steps reused the last factorization
   BOOST_TEST(f_stale < f_exact);
-}
-
-// The element loops (energy, gradient and Hessian assembly, the line
-// search's energies, the flip-free bounds) run in parallel with TBB from
-// parallel_elements_minimum elements, and add the elements' terms in element
-// order: the same bits as the serial loop, whatever the number of threads.
-BOOST_AUTO_TEST_CASE(parallel_element_loops_give_the_serial_bits_whatever_the_thread_count)
-{
-  namespace I = SMSO::internal;
-  // sums of terms of all magnitudes (rounding depends on the order), NaN ignored by min
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<double> terms(3 * I::parallel_elements_minimum + 17);
-  for(double& x : terms) x = std::ldexp(u(rng), int(40 * u(rng)));
-  terms[123] = std::numeric_limits<double>::quiet_NaN();
-  double serial_sum = 0, serial_min = std::numeric_limits<double>::infinity();
-  for(std::size_t k = 0; k < terms.size(); ++k)
-    if(k != 123) { serial_sum += terms[k]; serial_min = (std::min)(serial_min, terms[k]); }
-  terms[123] = 0.;
-  const double ordered_with_zero = std::accumulate(terms.begin(), terms.end(), 0.);
-  terms[123] = std::numeric_limits<double>::quiet_NaN();
-
-  // a curved grid of 2 x 72^2 = 10368 faces from a distorted map, with a scaffold
-  Surface_mesh sm = planar_grid(72, 5);
-  for(auto v : vertices(sm))
-  {
-    const Point_3 p = sm.point(v);
-    const double x = (p.x() - 36) / 36, y = (p.y() - 36) / 36;
-    sm.point(v) = Point_3(x, y, 0.6 * std::exp(-3 * (x * x + y * y)));
-  }
-  const Cut_mesh cm = [&] {
-    Cut_mesh c = one_chart(sm);
-    for(std::size_t v = 0; v < c.number_of_uv_vertices(); ++v)
-    {
-      const double* p = &c.points[3 * c.uv_vertex[v]];
-      c.uv[2*v] = 1.3 * p[0] + 0.05 * std::sin(3 * p[1]);
-      c.uv[2*v+1] = 0.8 * p[1];
-    }
-    return c;
-  }();
-  BOOST_REQUIRE(cm.number_of_faces() >= I::parallel_elements_minimum);
-  const SMSO::Symmetric_Dirichlet_energy energy;
-  double serial_energy = 0;
-  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
-    serial_energy += cm.face_area[f] * I::face_energy_density(cm, f, cm.uv.data(), energy);
-  serial_energy /= cm.total_area;
-
-  struct Run { std::vector<double> uv, hessian, scaffold; double sum, min, energy; };
-  auto run = [&](int threads) {
-    Run r;
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-#else
-    (void)threads;
-#endif
-    r.sum = I::ordered_sum(terms.size(), [&](std::size_t k) { return k == 123 ? 0. : terms[k]; });
-    r.min = I::parallel_min(terms.size(), [&](std::size_t k) { return terms[k]; });
-    Cut_mesh c = cm;
-    r.energy = I::total_energy(c, energy, c.uv.data());
-    I::Scaffold scaffold;
-    BOOST_REQUIRE(scaffold.build(c));
-    I::Projected_newton<SMSO::Symmetric_Dirichlet_energy, SMSO::Eigen_simplicial_ldlt_traits>
-      newton(c, energy, SMSO::Eigen_simplicial_ldlt_traits());
-    newton.set_scaffold(&scaffold);
-    BOOST_REQUIRE(newton.rebuild_pattern());
-    for(int it = 0; it < 4; ++it) BOOST_REQUIRE(newton.step() == I::NEWTON_PROGRESS);
-    const auto& H = newton.hessian();
-    r.hessian.assign(H.valuePtr(), H.valuePtr() + H.nonZeros());
-    r.uv = c.uv;
-    r.scaffold = scaffold.pos;
-    for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
-    return r;
-  };
-  const Run one = run(1), two = run(2), four = run(4);
-  for(const Run* r : {&one, &two, &four})
-  {
-    BOOST_TEST(r->sum == ordered_with_zero); // bit for bit: the serial order
-    BOOST_TEST(r->sum == serial_sum);
-    BOOST_TEST(r->min == serial_min);
-    BOOST_TEST(r->energy == serial_energy);
-    BOOST_TEST((r->uv == one.uv));
-    BOOST_TEST((r->hessian == one.hessian));
-    BOOST_TEST((r->scaffold == one.scaffold));
-  }
-  BOOST_TEST(one.energy > 4.5); // (a distorted start: the steps did something)
 }
 
 // A tall bump pressed flat: at its minimum many triangles are compressed,

@@ -8,7 +8,6 @@
 #define CGAL_SURFACE_MESH_SEAM_OPTIMIZATION_INTERNAL_FLIP_FREE_STEP_H
 
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_elements.h>
 
 #include <cmath>
 #include <limits>
@@ -50,10 +49,15 @@ inline double triangle_flip_free_step(const double* a, const double* b, const do
 // Largest t such that uv + s * dir flips no face for all s in [0, t).
 inline double max_flip_free_step(const Cut_mesh& cm, const double* uv, const double* dir)
 {
-  return parallel_min(cm.number_of_faces(), [&](std::size_t f) {
+  double t = std::numeric_limits<double>::infinity();
+  const std::size_t nf = cm.number_of_faces();
+  for(std::size_t f = 0; f < nf; ++f)
+  {
     const int i0 = 2 * cm.corner_uv[3*f], i1 = 2 * cm.corner_uv[3*f+1], i2 = 2 * cm.corner_uv[3*f+2];
-    return triangle_flip_free_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2);
-  });
+    const double r = triangle_flip_free_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2);
+    if(r < t) t = r;
+  }
+  return t;
 }
 
 // Largest t such that the triangle keeps twice its signed area >= `floor2`

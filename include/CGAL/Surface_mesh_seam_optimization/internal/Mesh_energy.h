@@ -12,7 +12,6 @@
 #include <CGAL/Surface_mesh_seam_optimization/parameters.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_elements.h>
 
 #include <Eigen/Core>
 
@@ -178,9 +177,11 @@ double face_energy_density(const Cut_mesh& cm, std::size_t f, const double* uv, 
 template <typename Energy>
 double total_energy(const Cut_mesh& cm, const Energy& energy, const double* uv)
 {
-  return ordered_sum(cm.number_of_faces(),
-                     [&](std::size_t f) { return cm.face_area[f] * face_energy_density(cm, f, uv, energy); }) /
-         cm.total_area;
+  double e = 0;
+  const std::size_t nf = cm.number_of_faces();
+  for(std::size_t f = 0; f < nf; ++f)
+    e += cm.face_area[f] * face_energy_density(cm, f, uv, energy);
+  return e / cm.total_area;
 }
 
 // The figure a distortion bound is judged on: the normalized energy itself,

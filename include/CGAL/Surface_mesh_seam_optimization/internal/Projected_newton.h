@@ -18,7 +18,6 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Mesh_energy.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_elements.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Stale_factor_cg.h>
 
@@ -358,10 +357,13 @@ private:
       for(std::size_t f = 0; f < nf; ++f)
         m_floor2[f] = (std::min)(ratio * m_cm.face_area[f], 0.5 * m_cm.signed_uv_area2(f));
     }
-    return parallel_min(nf, [&](std::size_t f) {
+    double t = std::numeric_limits<double>::infinity();
+    for(std::size_t f = 0; f < nf; ++f)
+    {
       const int i0 = 2 * m_cm.corner_uv[3*f], i1 = 2 * m_cm.corner_uv[3*f+1], i2 = 2 * m_cm.corner_uv[3*f+2];
-      return triangle_area_floor_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2, m_floor2[f]);
-    });
+      t = (std::min)(t, triangle_area_floor_step(uv + i0, uv + i1, uv + i2, dir + i0, dir + i1, dir + i2, m_floor2[f]));
+    }
+    return t;
   }
 
   // m_x = charts' UVs followed by the scaffold's own vertices.
@@ -443,60 +445,52 @@ private:
     for(int i : m_diagonal) values[i] += 1e-10 * mean_diag;
   }
 
-  // One element's weighted energy t[0], gradient t[1..6] and lower Hessian
-  // t[7..27] (in m_entry's order) at m_x: the charts' exact Hessian unless
-  // `project`, the scaffold's always projected.
-  void element_terms(std::size_t element, bool project, double* t) const
-  {
-    const std::size_t nf = m_cm.number_of_faces();
-    Eigen::Matrix2d J, dJ;
-    Eigen::Matrix4d HJ;
-    Eigen::Matrix<double, 6, 6> H;
-    if(element < nf)
-    {
-      face_jacobian(m_cm, element, m_x.data(), J);
-      const double w = m_cm.face_area[element] * (1. / m_cm.total_area);
-      t[0] = w * m_energy.value_gradient_and_hessian(J, dJ, HJ, project);
-      element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*element]), w, dJ, HJ, t + 1, &H);
-    }
-    else
-    {
-      const Symmetric_Dirichlet_energy sd;
-      const Scaffold& s = *m_scaffold;
-      const std::size_t k = element - nf;
-      const int* v = &s.tri[3*k];
-      triangle_jacobian(&m_x[2*v[0]], &m_x[2*v[1]], &m_x[2*v[2]], &s.rest_inverse[4*k], J);
-      t[0] = s.weight[k] * sd.value_gradient_and_hessian(J, dJ, HJ, true);
-      element_derivatives(Jacobian_coefficients(&s.rest_inverse[4*k]), s.weight[k], dJ, HJ, t + 1, &H);
-    }
-    int n = 7;
-    for(int p = 0; p < 6; ++p)
-      for(int q = 0; q <= p; ++q) t[n++] = H(p, q);
-  }
-
   // Gradient and Hessian at the current UVs (the charts' exact one unless
-  // `project`; the scaffold's always projected); returns the energy. The
-  // elements' terms are added in element order (Parallel_elements.h).
+  // `project`; the scaffold's always projected); returns the energy.
   double assemble(bool project = true)
   {
     const std::size_t nf = m_cm.number_of_faces();
     std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
     m_gradient.setZero();
-    double* values = m_H.valuePtr();
+    const double inv_area = 1. / m_cm.total_area;
     double e = 0;
+    Eigen::Matrix2d J, dJ;
+    Eigen::Matrix4d HJ;
+    Eigen::Matrix<double, 6, 6> H;
+    double g[6];
     int dof[6];
-    for_each_element_in_order(
-      number_of_elements(), 28, m_terms,
-      [&](std::size_t element, double* t) { element_terms(element, project, t); },
-      [&](std::size_t element, const double* t) {
-        if(element == nf) m_energy_value = e; // (the charts' part)
-        e += t[0];
-        local_dofs(element, dof);
-        for(int p = 0; p < 6; ++p) m_gradient[dof[p]] += t[1 + p];
-        const int* entry = &m_entry[21*element];
-        for(int n = 0; n < 21; ++n) values[entry[n]] += t[7 + n];
-      });
-    if(!has_scaffold()) m_energy_value = e;
+    double* values = m_H.valuePtr();
+    auto add = [&](std::size_t element) {
+      local_dofs(element, dof);
+      for(int p = 0; p < 6; ++p) m_gradient[dof[p]] += g[p];
+      const int* entry = &m_entry[21*element];
+      int n = 0;
+      for(int p = 0; p < 6; ++p)
+        for(int q = 0; q <= p; ++q)
+          values[entry[n++]] += H(p, q);
+    };
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      face_jacobian(m_cm, f, m_x.data(), J);
+      const double w = m_cm.face_area[f] * inv_area;
+      e += w * m_energy.value_gradient_and_hessian(J, dJ, HJ, project);
+      element_derivatives(Jacobian_coefficients(&m_cm.rest_inverse[4*f]), w, dJ, HJ, g, &H);
+      add(f);
+    }
+    m_energy_value = e;
+    if(has_scaffold())
+    {
+      const Symmetric_Dirichlet_energy sd;
+      const Scaffold& s = *m_scaffold;
+      for(std::size_t t = 0; t < s.number_of_triangles(); ++t)
+      {
+        const int* v = &s.tri[3*t];
+        triangle_jacobian(&m_x[2*v[0]], &m_x[2*v[1]], &m_x[2*v[2]], &s.rest_inverse[4*t], J);
+        e += s.weight[t] * sd.value_gradient_and_hessian(J, dJ, HJ, true);
+        element_derivatives(Jacobian_coefficients(&s.rest_inverse[4*t]), s.weight[t], dJ, HJ, g, &H);
+        add(nf + t);
+      }
+    }
     m_objective = e;
     return e;
   }
@@ -513,7 +507,6 @@ private:
 
   Matrix m_H;
   std::vector<int> m_entry, m_diagonal;
-  std::vector<double> m_terms; // the elements' terms of a block (assemble())
   Eigen::VectorXd m_gradient, m_direction;
   std::vector<double> m_trial, m_extrapolated;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;

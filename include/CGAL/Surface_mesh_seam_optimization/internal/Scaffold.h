@@ -15,7 +15,6 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Cut_mesh.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
-#include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_elements.h>
 
 #include <Eigen/Core>
 
@@ -82,11 +81,14 @@ struct Scaffold
   double energy(const double* x) const
   {
     const Symmetric_Dirichlet_energy sd;
-    return ordered_sum(weight.size(), [&](std::size_t t) {
-      Eigen::Matrix2d J;
+    Eigen::Matrix2d J;
+    double e = 0;
+    for(std::size_t t = 0; t < weight.size(); ++t)
+    {
       triangle_jacobian(x + 2*tri[3*t], x + 2*tri[3*t+1], x + 2*tri[3*t+2], &rest_inverse[4*t], J);
-      return weight[t] * sd.value(J);
-    });
+      e += weight[t] * sd.value(J);
+    }
+    return e;
   }
 
   std::vector<double> densities(const double* x) const
@@ -114,10 +116,13 @@ struct Scaffold
   // Largest t such that x + s * dir flips no scaffold triangle for s in [0, t).
   double max_flip_free_step(const double* x, const double* dir) const
   {
-    return parallel_min(weight.size(), [&](std::size_t k) {
+    double t = std::numeric_limits<double>::infinity();
+    for(std::size_t k = 0; k < weight.size(); ++k)
+    {
       const int i0 = 2 * tri[3*k], i1 = 2 * tri[3*k+1], i2 = 2 * tri[3*k+2];
-      return triangle_flip_free_step(x + i0, x + i1, x + i2, dir + i0, dir + i1, dir + i2);
-    });
+      t = (std::min)(t, triangle_flip_free_step(x + i0, x + i1, x + i2, dir + i0, dir + i1, dir + i2));
+    }
+    return t;
   }
 
 private:
