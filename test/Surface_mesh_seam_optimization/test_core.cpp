@@ -42,6 +42,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <cstring>
 #include <random>
 #include <set>
 #include <string>
@@ -480,6 +481,13 @@ BOOST_AUTO_TEST_CASE(block_ldlt_solves_hessians_of_uv_maps_as_the_scalar_ldlt)
     BOOST_REQUIRE(factor.analyze(A));
     Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Eigen::AMDOrdering<int> > eigen(A);
     BOOST_TEST(double(4 * factor.factor_blocks() + A.rows() / 2) <= 1.1 * double(eigen.matrixL().nestedExpression().nonZeros()));
+    // the AVX update (where the CPU has it) gives the SSE2 update's bits
+    SMSO::internal::Block_ldlt narrow;
+    BOOST_REQUIRE(narrow.analyze(B) && narrow.factorize(B, false) && factor.analyze(B) && factor.factorize(B));
+    Eigen::VectorXd x_narrow, x_wide;
+    BOOST_REQUIRE(narrow.solve(b, x_narrow) && factor.solve(b, x_wide));
+    BOOST_TEST(std::memcmp(x_narrow.data(), x_wide.data(), sizeof(double) * std::size_t(x_wide.size())) == 0);
+    BOOST_TEST((B.selfadjointView<Eigen::Lower>() * x_wide - b).norm() <= 1e-9 * b.norm());
   }
   // the thresholds: CHOLMOD from `threshold` unknowns for other patterns,
   // from `block_threshold` for 2x2 blocks

@@ -19,6 +19,15 @@
 #include <emmintrin.h>
 #endif
 
+// The update of the factorization by 256-bit operations where the CPU has
+// AVX, chosen at run time (a build for any x86-64 runs everywhere): the same
+// operations in the same order, so the same bits (notes/issue20/session_2026-12-02).
+#if defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || defined(__i386__)) && \
+    !defined(CGAL_SMSO_NO_AVX_DISPATCH)
+#define CGAL_SMSO_BLOCK_LDLT_AVX 1
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -156,14 +165,21 @@ public:
     return true;
   }
 
-  // false on a singular (or non-finite) diagonal block
-  bool factorize(const Matrix& A)
+  // false on a singular (or non-finite) diagonal block; `avx`: the AVX
+  // update where the CPU has it (false: SSE2, the same bits)
+  bool factorize(const Matrix& A, bool avx = true)
   {
     if(m_n == 0 || !A.isCompressed() || std::size_t(A.nonZeros()) != m_slot.size()) return false;
     const double* a = A.valuePtr();
     for(std::size_t p = 0; p < m_slot.size(); ++p)
       if(m_slot[p] >= 0) m_values[std::size_t(m_slot[p])] = a[p];
     const int n = m_n;
+#ifdef CGAL_SMSO_BLOCK_LDLT_AVX
+    static const bool cpu_has_avx = __builtin_cpu_supports("avx");
+    avx = avx && cpu_has_avx;
+#else
+    (void)avx;
+#endif
     std::fill(m_lnz.begin(), m_lnz.end(), 0);
     std::fill(m_flag.begin(), m_flag.end(), -1);
     for(int k = 0; k < n; ++k)
@@ -192,6 +208,13 @@ public:
         while(len > 0) m_pattern[std::size_t(--top)] = m_pattern[std::size_t(--len)];
       }
       // row k of L by a sparse triangular solve, and D_k
+#ifdef CGAL_SMSO_BLOCK_LDLT_AVX
+      if(avx)
+      {
+        eliminate_row_avx(k, top, d);
+        top = n;
+      }
+#endif
       for(; top < n; ++top)
       {
         const int i = m_pattern[std::size_t(top)];
@@ -225,18 +248,7 @@ public:
           r[3] -= l[2] * y1 + l[3] * y3;
         }
 #endif
-        // L_ki = Y_i^T D_i^-1, D_k -= L_ki Y_i
-        const double* e = &m_dinv[4 * std::size_t(i)];
-        const double l0 = y0 * e[0] + y2 * e[2], l1 = y0 * e[1] + y2 * e[3];
-        const double l2 = y1 * e[0] + y3 * e[2], l3 = y1 * e[1] + y3 * e[3];
-        d[0] -= l0 * y0 + l1 * y2;
-        d[1] -= l0 * y1 + l1 * y3;
-        d[2] -= l2 * y0 + l3 * y2;
-        d[3] -= l2 * y1 + l3 * y3;
-        double* out = &m_lx[4 * std::size_t(end)];
-        out[0] = l0; out[1] = l1; out[2] = l2; out[3] = l3;
-        m_li[std::size_t(end)] = k;
-        ++m_lnz[std::size_t(i)];
+        store_row_block(k, i, end, y0, y1, y2, y3, d);
       }
       // (symmetric up to rounding)
       const double off = 0.5 * (d[1] + d[2]);
@@ -304,6 +316,50 @@ public:
   std::size_t factor_blocks() const { return m_li.size(); }
 
 private:
+  // L_ki = Y_i^T D_i^-1 into the next slot `end` of column i, D_k -= L_ki Y_i
+  void store_row_block(int k, int i, int end, double y0, double y1, double y2, double y3, double* d)
+  {
+    const double* e = &m_dinv[4 * std::size_t(i)];
+    const double l0 = y0 * e[0] + y2 * e[2], l1 = y0 * e[1] + y2 * e[3];
+    const double l2 = y1 * e[0] + y3 * e[2], l3 = y1 * e[1] + y3 * e[3];
+    d[0] -= l0 * y0 + l1 * y2;
+    d[1] -= l0 * y1 + l1 * y3;
+    d[2] -= l2 * y0 + l3 * y2;
+    d[3] -= l2 * y1 + l3 * y3;
+    double* out = &m_lx[4 * std::size_t(end)];
+    out[0] = l0; out[1] = l1; out[2] = l2; out[3] = l3;
+    m_li[std::size_t(end)] = k;
+    ++m_lnz[std::size_t(i)];
+  }
+
+#ifdef CGAL_SMSO_BLOCK_LDLT_AVX
+  // The row loop of factorize() with Y_r -= L_ri Y_i as one 256-bit
+  // operation per block: L's block (l0, l1, l2, l3) duplicated against
+  // (y0, y1, y0, y1) and swapped against (y2, y3, y2, y3), the SSE2 code's
+  // products and sums in its order (no FMA). The whole loop, not the update
+  // alone: a call per column costs what AVX gains on short columns.
+  __attribute__((target("avx"))) void eliminate_row_avx(int k, int top, double* d)
+  {
+    for(; top < m_n; ++top)
+    {
+      const int i = m_pattern[std::size_t(top)];
+      double* yi = &m_y[4 * std::size_t(i)];
+      const double y0 = yi[0], y1 = yi[1], y2 = yi[2], y3 = yi[3];
+      yi[0] = yi[1] = yi[2] = yi[3] = 0.;
+      const int end = m_lp[std::size_t(i)] + m_lnz[std::size_t(i)];
+      const __m256d ya = _mm256_set_pd(y1, y0, y1, y0), yb = _mm256_set_pd(y3, y2, y3, y2);
+      for(int p = m_lp[std::size_t(i)]; p < end; ++p)
+      {
+        const __m256d l = _mm256_loadu_pd(&m_lx[4 * std::size_t(p)]);
+        double* r = &m_y[4 * std::size_t(m_li[std::size_t(p)])];
+        const __m256d u = _mm256_add_pd(_mm256_mul_pd(_mm256_movedup_pd(l), ya), _mm256_mul_pd(_mm256_permute_pd(l, 0xF), yb));
+        _mm256_storeu_pd(r, _mm256_sub_pd(_mm256_loadu_pd(r), u));
+      }
+      store_row_block(k, i, end, y0, y1, y2, y3, d);
+    }
+  }
+#endif
+
   // the block rows R >= C of block column C, each once, and how many entries
   // of the lower triangle each has stored (in count)
   static void block_column(const Matrix& A, int C, std::vector<int>& mark, std::vector<int>& count,
