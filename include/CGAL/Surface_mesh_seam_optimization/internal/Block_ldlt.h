@@ -138,29 +138,53 @@ public:
         }
     }
     m_values.assign(4 * m_ui.size(), 0.);
-    // elimination tree and the number of blocks of each column of L
+    // Elimination tree, the number of blocks of each column of L, and each
+    // row of L in the order the factorization eliminates it (the tree's
+    // topological order, whose sums give the bits) with the slot of each of
+    // its blocks in its column: the numeric factorization has no symbolic
+    // work left.
     m_parent.assign(std::size_t(n), -1);
     m_flag.assign(std::size_t(n), -1);
-    std::vector<int> nz(std::size_t(n), 0);
+    std::vector<int> nz(std::size_t(n), 0), pattern(static_cast<std::size_t>(n));
+    m_rp.assign(std::size_t(n) + 1, 0);
+    m_ri.clear();
+    m_ri.reserve(4 * m_ui.size());
     for(int k = 0; k < n; ++k)
     {
       m_flag[std::size_t(k)] = k;
+      int top = n;
       for(int p = m_up[std::size_t(k)]; p < m_up[std::size_t(k) + 1]; ++p)
-        for(int i = m_ui[std::size_t(p)]; i < k && m_flag[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
+      {
+        int i = m_ui[std::size_t(p)], len = 0;
+        for(; i < k && m_flag[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
         {
           if(m_parent[std::size_t(i)] == -1) m_parent[std::size_t(i)] = k;
           ++nz[std::size_t(i)];
           m_flag[std::size_t(i)] = k;
+          pattern[std::size_t(len++)] = i;
         }
+        while(len > 0) pattern[std::size_t(--top)] = pattern[std::size_t(--len)];
+      }
+      m_ri.insert(m_ri.end(), pattern.begin() + top, pattern.end());
+      m_rp[std::size_t(k) + 1] = int(m_ri.size());
     }
     m_lp.assign(std::size_t(n) + 1, 0);
     for(int k = 0; k < n; ++k) m_lp[std::size_t(k) + 1] = m_lp[std::size_t(k)] + nz[std::size_t(k)];
-    m_li.resize(std::size_t(m_lp[std::size_t(n)]));
-    m_lx.resize(4 * m_li.size());
+    const std::size_t nnz = m_ri.size();
+    m_li.resize(nnz);
+    m_rslot.resize(nnz);
+    std::vector<int>& next = nz; // (the next free slot of each column)
+    std::copy(m_lp.begin(), m_lp.end() - 1, next.begin());
+    for(int k = 0; k < n; ++k)
+      for(int t = m_rp[std::size_t(k)]; t < m_rp[std::size_t(k) + 1]; ++t)
+      {
+        const int i = m_ri[std::size_t(t)];
+        m_rslot[std::size_t(t)] = next[std::size_t(i)];
+        m_li[std::size_t(next[std::size_t(i)]++)] = k;
+      }
+    m_lx.resize(4 * nnz);
     m_dinv.resize(4 * std::size_t(n));
-    m_lnz.resize(std::size_t(n));
     m_y.assign(4 * std::size_t(n), 0.);
-    m_pattern.resize(std::size_t(n));
     m_n = n;
     return true;
   }
@@ -180,17 +204,13 @@ public:
 #else
     (void)avx;
 #endif
-    std::fill(m_lnz.begin(), m_lnz.end(), 0);
-    std::fill(m_flag.begin(), m_flag.end(), -1);
     for(int k = 0; k < n; ++k)
     {
-      // scatter column k of the upper triangle, and its pattern in L (topological order)
-      int top = n;
-      m_flag[std::size_t(k)] = k;
+      // scatter column k of the upper triangle
       double d[4] = { 0., 0., 0., 0. };
       for(int p = m_up[std::size_t(k)]; p < m_up[std::size_t(k) + 1]; ++p)
       {
-        int i = m_ui[std::size_t(p)];
+        const int i = m_ui[std::size_t(p)];
         const double* v = &m_values[4 * std::size_t(p)];
         if(i == k)
         {
@@ -199,29 +219,18 @@ public:
         }
         double* y = &m_y[4 * std::size_t(i)];
         for(int q = 0; q < 4; ++q) y[q] += v[q];
-        int len = 0;
-        for(; m_flag[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
-        {
-          m_pattern[std::size_t(len++)] = i;
-          m_flag[std::size_t(i)] = k;
-        }
-        while(len > 0) m_pattern[std::size_t(--top)] = m_pattern[std::size_t(--len)];
       }
       // row k of L by a sparse triangular solve, and D_k
 #ifdef CGAL_SMSO_BLOCK_LDLT_AVX
-      if(avx)
-      {
-        eliminate_row_avx(k, top, d);
-        top = n;
-      }
+      if(avx) eliminate_row_avx(k, d);
+      else
 #endif
-      for(; top < n; ++top)
+      for(int t = m_rp[std::size_t(k)]; t < m_rp[std::size_t(k) + 1]; ++t)
       {
-        const int i = m_pattern[std::size_t(top)];
+        const int i = m_ri[std::size_t(t)], end = m_rslot[std::size_t(t)];
         double* yi = &m_y[4 * std::size_t(i)];
         const double y0 = yi[0], y1 = yi[1], y2 = yi[2], y3 = yi[3];
         yi[0] = yi[1] = yi[2] = yi[3] = 0.;
-        const int end = m_lp[std::size_t(i)] + m_lnz[std::size_t(i)];
         // Y_r -= L_ri Y_i (the loop of the factorization's time; SSE2 does
         // each row of the 2x2 product at once, the same operations in the
         // same order as the scalar code: x0.70 time at 10k-20k unknowns)
@@ -248,7 +257,7 @@ public:
           r[3] -= l[2] * y1 + l[3] * y3;
         }
 #endif
-        store_row_block(k, i, end, y0, y1, y2, y3, d);
+        store_row_block(i, end, y0, y1, y2, y3, d);
       }
       // (symmetric up to rounding)
       const double off = 0.5 * (d[1] + d[2]);
@@ -316,8 +325,8 @@ public:
   std::size_t factor_blocks() const { return m_li.size(); }
 
 private:
-  // L_ki = Y_i^T D_i^-1 into the next slot `end` of column i, D_k -= L_ki Y_i
-  void store_row_block(int k, int i, int end, double y0, double y1, double y2, double y3, double* d)
+  // L_ki = Y_i^T D_i^-1 into its slot `end` of column i, D_k -= L_ki Y_i
+  void store_row_block(int i, int end, double y0, double y1, double y2, double y3, double* d)
   {
     const double* e = &m_dinv[4 * std::size_t(i)];
     const double l0 = y0 * e[0] + y2 * e[2], l1 = y0 * e[1] + y2 * e[3];
@@ -328,8 +337,6 @@ private:
     d[3] -= l2 * y1 + l3 * y3;
     double* out = &m_lx[4 * std::size_t(end)];
     out[0] = l0; out[1] = l1; out[2] = l2; out[3] = l3;
-    m_li[std::size_t(end)] = k;
-    ++m_lnz[std::size_t(i)];
   }
 
 #ifdef CGAL_SMSO_BLOCK_LDLT_AVX
@@ -338,15 +345,14 @@ private:
   // (y0, y1, y0, y1) and swapped against (y2, y3, y2, y3), the SSE2 code's
   // products and sums in its order (no FMA). The whole loop, not the update
   // alone: a call per column costs what AVX gains on short columns.
-  __attribute__((target("avx"))) void eliminate_row_avx(int k, int top, double* d)
+  __attribute__((target("avx"))) void eliminate_row_avx(int k, double* d)
   {
-    for(; top < m_n; ++top)
+    for(int t = m_rp[std::size_t(k)]; t < m_rp[std::size_t(k) + 1]; ++t)
     {
-      const int i = m_pattern[std::size_t(top)];
+      const int i = m_ri[std::size_t(t)], end = m_rslot[std::size_t(t)];
       double* yi = &m_y[4 * std::size_t(i)];
       const double y0 = yi[0], y1 = yi[1], y2 = yi[2], y3 = yi[3];
       yi[0] = yi[1] = yi[2] = yi[3] = 0.;
-      const int end = m_lp[std::size_t(i)] + m_lnz[std::size_t(i)];
       const __m256d ya = _mm256_set_pd(y1, y0, y1, y0), yb = _mm256_set_pd(y3, y2, y3, y2);
       for(int p = m_lp[std::size_t(i)]; p < end; ++p)
       {
@@ -355,7 +361,7 @@ private:
         const __m256d u = _mm256_add_pd(_mm256_mul_pd(_mm256_movedup_pd(l), ya), _mm256_mul_pd(_mm256_permute_pd(l, 0xF), yb));
         _mm256_storeu_pd(r, _mm256_sub_pd(_mm256_loadu_pd(r), u));
       }
-      store_row_block(k, i, end, y0, y1, y2, y3, d);
+      store_row_block(i, end, y0, y1, y2, y3, d);
     }
   }
 #endif
@@ -383,7 +389,8 @@ private:
   std::vector<int> m_up, m_ui; // upper triangle of the permuted graph (column starts, rows)
   std::vector<int> m_slot; // entry of A -> value in m_values (-1: upper triangle, not read)
   std::vector<double> m_values; // blocks of m_ui, 4 values each
-  std::vector<int> m_parent, m_flag, m_lp, m_li, m_lnz, m_pattern;
+  std::vector<int> m_parent, m_flag, m_lp, m_li;
+  std::vector<int> m_rp, m_ri, m_rslot; // rows of L: starts, columns, slots in their columns
   std::vector<double> m_lx, m_dinv, m_y, m_x;
 };
 
