@@ -38,11 +38,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <map>
-#include <cstring>
 #include <random>
 #include <set>
 #include <string>
