@@ -35,6 +35,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -1188,6 +1189,33 @@ BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)
   budget.first_done();
   BOOST_TEST(budget.second_may_go(10));
   BOOST_TEST(!budget.second_may_go(11));
+}
+
+BOOST_AUTO_TEST_CASE(only_visitors_that_read_the_progress_get_its_seam_length)
+{
+  // the default visitor and a start without the user's visitor read nothing
+  // (their runs skip the seam length); a visitor of the user's, derived from
+  // the default one or not, and a start that calls it, do
+  struct Derived : SMSO::Default_seam_optimization_visitor {};
+  struct Own
+  {
+    bool on_iteration(const SMSO::Seam_optimization_progress&) { return true; }
+    bool on_topology_operation(const SMSO::Seam_optimization_progress&) { return true; }
+    bool on_lambda_update(const SMSO::Seam_optimization_progress&) { return true; }
+  };
+  SMSO::Default_seam_optimization_visitor by_default;
+  Derived derived;
+  Own own;
+  BOOST_TEST(!SMSO::internal::visitor_reads_progress(by_default));
+  BOOST_TEST(SMSO::internal::visitor_reads_progress(derived));
+  BOOST_TEST(SMSO::internal::visitor_reads_progress(own));
+  std::atomic<bool> stop(false);
+  SMSO::internal::Start_visitor<SMSO::Default_seam_optimization_visitor> first_default(&by_default, stop),
+    other(nullptr, stop);
+  SMSO::internal::Start_visitor<Derived> first_derived(&derived, stop);
+  BOOST_TEST(!SMSO::internal::visitor_reads_progress(first_default));
+  BOOST_TEST(!SMSO::internal::visitor_reads_progress(other));
+  BOOST_TEST(SMSO::internal::visitor_reads_progress(first_derived));
 }
 
 template <typename Mesh>

@@ -58,6 +58,23 @@ auto visitor_parameter(const NamedParameters& np)
 template <typename Visitor>
 Visitor& unwrap_visitor(Visitor& visitor) { return visitor; }
 
+// Whether a visitor reads the progress it is given, so that a run can skip
+// the figures nobody reads (the seam length is a pass over the mesh at every
+// Newton iteration). The default visitor does not; an internal one says so by
+// a member reads_progress(); any other does.
+template <typename Visitor>
+auto visitor_reads_progress(const Visitor& visitor, int) -> decltype(bool(visitor.reads_progress()))
+{
+  return visitor.reads_progress();
+}
+template <typename Visitor>
+bool visitor_reads_progress(const Visitor&, long)
+{
+  return !std::is_same<Visitor, Default_seam_optimization_visitor>::value;
+}
+template <typename Visitor>
+bool visitor_reads_progress(const Visitor& visitor) { return visitor_reads_progress(visitor, 0); }
+
 template <typename Visitor>
 Visitor& unwrap_visitor(std::reference_wrapper<Visitor>& visitor)
 {

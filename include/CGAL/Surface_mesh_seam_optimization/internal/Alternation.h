@@ -209,7 +209,7 @@ public:
     p.iterations = m_newton.iterations();
     p.topology_operations = m_operations;
     p.distortion = m_newton.energy();
-    p.seam_length_normalized = m_cm.seam_length() / m_cm.normalization_radius();
+    if(visitor_reads_progress(m_visitor)) p.seam_length_normalized = m_cm.seam_length() / m_cm.normalization_radius();
     p.lambda = m_lambda;
     p.seconds = m_timer.time();
     return p;

@@ -143,24 +143,23 @@ public:
     // topological order, whose sums give the bits) with the slot of each of
     // its blocks in its column: the numeric factorization has no symbolic
     // work left.
-    m_parent.assign(std::size_t(n), -1);
-    m_flag.assign(std::size_t(n), -1);
+    std::vector<int> parent(std::size_t(n), -1), flag(std::size_t(n), -1);
     std::vector<int> nz(std::size_t(n), 0), pattern(static_cast<std::size_t>(n));
     m_rp.assign(std::size_t(n) + 1, 0);
     m_ri.clear();
     m_ri.reserve(4 * m_ui.size());
     for(int k = 0; k < n; ++k)
     {
-      m_flag[std::size_t(k)] = k;
+      flag[std::size_t(k)] = k;
       int top = n;
       for(int p = m_up[std::size_t(k)]; p < m_up[std::size_t(k) + 1]; ++p)
       {
         int i = m_ui[std::size_t(p)], len = 0;
-        for(; i < k && m_flag[std::size_t(i)] != k; i = m_parent[std::size_t(i)])
+        for(; i < k && flag[std::size_t(i)] != k; i = parent[std::size_t(i)])
         {
-          if(m_parent[std::size_t(i)] == -1) m_parent[std::size_t(i)] = k;
+          if(parent[std::size_t(i)] == -1) parent[std::size_t(i)] = k;
           ++nz[std::size_t(i)];
-          m_flag[std::size_t(i)] = k;
+          flag[std::size_t(i)] = k;
           pattern[std::size_t(len++)] = i;
         }
         while(len > 0) pattern[std::size_t(--top)] = pattern[std::size_t(--len)];
@@ -389,7 +388,7 @@ private:
   std::vector<int> m_up, m_ui; // upper triangle of the permuted graph (column starts, rows)
   std::vector<int> m_slot; // entry of A -> value in m_values (-1: upper triangle, not read)
   std::vector<double> m_values; // blocks of m_ui, 4 values each
-  std::vector<int> m_parent, m_flag, m_lp, m_li;
+  std::vector<int> m_lp, m_li;
   std::vector<int> m_rp, m_ri, m_rslot; // rows of L: starts, columns, slots in their columns
   std::vector<double> m_lx, m_dinv, m_y, m_x;
 };

@@ -124,6 +124,7 @@ public:
     return go(!m_user || m_user->on_topology_operation(p));
   }
   bool on_lambda_update(const Seam_optimization_progress& p) { return go(!m_user || m_user->on_lambda_update(p)); }
+  bool reads_progress() const { return m_user && visitor_reads_progress(*m_user); }
 
 private:
   bool go(bool user_goes)

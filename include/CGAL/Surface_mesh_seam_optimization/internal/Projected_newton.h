@@ -176,7 +176,9 @@ public:
           if(R < C) continue;
           int* at = base[a][b];
           if(R == C) { at[0] = outer[2*C]; at[1] = outer[2*C + 1] - 1; continue; }
-          at[1] = int(std::lower_bound(inner + outer[2*C + 1], inner + outer[2*C + 2], 2 * R) - inner);
+          // (a column holds a few blocks: a scan beats a binary search)
+          at[1] = outer[2*C + 1];
+          while(inner[at[1]] < 2 * R) ++at[1];
           at[0] = at[1] - outer[2*C + 1] + outer[2*C] + 1; // (column 2C has row 2C more)
         }
       int k = 0;
@@ -403,16 +405,17 @@ private:
       for(int a = 0; a < 3; ++a)
         for(int b = 1; b < 3; ++b) adjacent[fill[dof[2*a] / 2]++] = dof[2 * ((a + b) % 3)] / 2;
     }
-    // per vertex: itself, then its neighbours of higher index, sorted
-    std::vector<int> outer(ndof + 1, 0), inner;
+    // per vertex: itself, then its neighbours of higher index, sorted (each
+    // kept once before the sort: an interior edge is listed by both its faces)
+    std::vector<int> outer(ndof + 1, 0), inner, seen(nv, -1);
     inner.reserve(std::size_t(2 * ndof + 4 * start[nv]));
     for(int v = 0; v < nv; ++v)
     {
       int* first = adjacent.data() + start[v];
-      int* last = adjacent.data() + start[v + 1];
+      int* last = first;
+      for(const int* w = first; w != adjacent.data() + start[v + 1]; ++w)
+        if(*w > v && seen[*w] != v) { seen[*w] = v; *last++ = *w; }
       std::sort(first, last);
-      last = std::unique(first, last);
-      first = std::upper_bound(first, last, v);
       for(int c = 0; c < 2; ++c)
       {
         if(c == 0) inner.push_back(2 * v);
