@@ -283,7 +283,7 @@ timed = [o for o in out if num(o.get("t_assembly")) is not None and num(o["secon
 if timed:
     L.append("")
     L.append("## Time by phase\n")
-    L.append("Seconds (and share of the wall time) of each phase; other: setup, measures, copies. Scaffold rebuilds: times the scaffold was meshed.\n")
+    L.append("Seconds (and share of the wall time) of each phase of the kept start (all of its path: the relaxed start's run without the scaffold, the first-cut start's distortion minimization); other: setup, measures, copies, and the time the call waited for the starts not kept, which ran beside it. Scaffold rebuilds: times the scaffold was meshed.\n")
     hdr = ["mesh", "s"] + [p[1] for p in phases] + ["other", "scaffold rebuilds"]
     L.append("| " + " | ".join(hdr) + " |")
     L.append("|" + "---|" * len(hdr))

@@ -77,15 +77,16 @@ struct Optimization_result
   std::size_t scaffold_rebuilds = 0; ///< times the scaffold was meshed anew
   /// `optimize_seams()`: the start whose result this is (see `number_of_starts`): 0 the first (OptCuts from
   /// the initial map), 1 the hold-price start (a dual step that holds the price of distortion while a cut
-  /// pays), 2 the relaxed start (seams without the scaffold first; its iterations, operations and scaffold
-  /// rebuilds count both phases), 3 the first-cut start (from EBCuts' first cut); the other figures are
-  /// those of that start
+  /// pays), 2 the relaxed start (seams without the scaffold first; its iterations, operations, scaffold
+  /// rebuilds and timings count both phases), 3 the first-cut start (from EBCuts' first cut; its timings
+  /// count the distortion minimization it cuts from); the other figures are those of that start
   std::size_t start = 0;
   /// faces of the simplified proxy the seams were optimized on before the mesh
   /// itself (`proxy_number_of_faces`), 0 if none; the iterations and operations count both
   std::size_t proxy_faces = 0;
   double seconds = 0;
-  Optimization_timings timings;     ///< where the seconds went
+  Optimization_timings timings;     ///< where the seconds of the kept start went (`seconds` also counts
+                                    ///< the time it waited for the others, which ran beside it)
 
   bool has_result() const { return Surface_mesh_seam_optimization::has_result(status); }
 };

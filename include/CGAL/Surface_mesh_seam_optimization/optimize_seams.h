@@ -255,6 +255,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       third.iterations += relaxed.iterations;
       third.topology_operations += relaxed.topology_operations;
       third.scaffold_rebuilds += relaxed.scaffold_rebuilds;
+      third.timings += relaxed.timings;
       third.initial_distortion = relaxed.initial_distortion;
     }
   };
@@ -298,6 +299,7 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
       fourth = optimize_seams_impl<TriangleMesh, std::decay_t<decltype(fourth_uv)>, std::decay_t<decltype(start_np)>,
                                    true>(tm, fourth_uv, start_np);
       fourth_time_limited = fourth.status == WARNING_TIME_LIMIT;
+      fourth.timings += minimized.timings;
     }
   };
   // The first start on the calling thread, the next beside it, the others
