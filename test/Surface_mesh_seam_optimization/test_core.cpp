@@ -490,6 +490,49 @@ BOOST_AUTO_TEST_CASE(block_ldlt_solves_hessians_of_uv_maps_as_the_scalar_ldlt)
     BOOST_TEST(std::memcmp(x_narrow.data(), x_wide.data(), sizeof(double) * std::size_t(x_wide.size())) == 0);
     BOOST_TEST((B.selfadjointView<Eigen::Lower>() * x_wide - b).norm() <= 1e-9 * b.norm());
   }
+  // an elimination order of the blocks given instead of AMD's (what
+  // Projected_newton passes on after a topology operation): AMD's own gives
+  // its bits; another (the natural order) the same solution up to rounding,
+  // with more fill; an order of the wrong size is refused
+  {
+    const Matrix A = hessian(20, 11u);
+    const int n = int(A.rows() / 2);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 1., 2.);
+    SMSO::Default_sparse_solver_traits amd, given, natural;
+    Eigen::VectorXd x_amd, x_given, x_natural;
+    BOOST_REQUIRE(amd.analyze_pattern(A) && amd.factorize(A) && amd.solve(b, x_amd));
+    const std::vector<int> order = amd.block_ordering();
+    BOOST_REQUIRE(order.size() == std::size_t(n));
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<int> identity(static_cast<std::size_t>(n));
+    for(int k = 0; k < n; ++k) identity[std::size_t(k)] = k;
+    BOOST_TEST(sorted == identity); // a permutation
+    BOOST_TEST(order != identity);
+    BOOST_REQUIRE(given.analyze_pattern(A, order) && given.factorize(A) && given.solve(b, x_given));
+    BOOST_TEST(given.block_ordering() == order);
+    BOOST_TEST(std::memcmp(x_amd.data(), x_given.data(), sizeof(double) * std::size_t(x_amd.size())) == 0);
+    BOOST_REQUIRE(natural.analyze_pattern(A, identity) && natural.factorize(A) && natural.solve(b, x_natural));
+    BOOST_TEST(natural.uses_blocks());
+    BOOST_TEST(natural.block_ordering() == identity);
+    BOOST_TEST((x_natural - x_amd).norm() <= 1e-9 * x_amd.norm());
+    BOOST_TEST((x_natural - x_amd).norm() > 0.);
+    SMSO::internal::Block_ldlt amd_factor, natural_factor, wrong;
+    std::vector<int> graph_outer, graph_inner;
+    BOOST_REQUIRE(SMSO::internal::Block_ldlt::block_graph(A, graph_outer, graph_inner));
+    BOOST_REQUIRE(amd_factor.analyze_blocks(A, graph_outer, graph_inner) &&
+                  natural_factor.analyze_blocks(A, graph_outer, graph_inner, &identity));
+    BOOST_TEST(natural_factor.factor_blocks() > amd_factor.factor_blocks());
+    const std::vector<int> too_short(identity.begin(), identity.end() - 1);
+    BOOST_TEST(!wrong.analyze_blocks(A, graph_outer, graph_inner, &too_short));
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+    // no order by blocks where the matrix is not factorized by blocks
+    SMSO::Default_sparse_solver_traits by_cholmod(1000, false, 100);
+    BOOST_REQUIRE(by_cholmod.analyze_pattern(A, order));
+    BOOST_TEST(by_cholmod.uses_cholmod());
+    BOOST_TEST(by_cholmod.block_ordering().empty());
+#endif
+  }
   // the thresholds: CHOLMOD from `threshold` unknowns for other patterns,
   // from `block_threshold` for 2x2 blocks
   {

@@ -27,6 +27,14 @@ A model is default constructible and copy constructible; it is passed by
 value, like CGAL's own solver traits, so a copy may share the factorization
 with the original.
 
+A model may also eliminate the matrix's 2x2 blocks (one per UV vertex) in an
+order it is given, as `Default_sparse_solver_traits` does: with the members
+`bool analyze_pattern(const Matrix& A, const std::vector<int>& block_ordering)`
+and `const std::vector<int>& block_ordering() const` (the order of the last
+analysis, empty if it has none), the Newton iterations keep the order of an
+analysis for the next few patterns after topology operations instead of
+computing a new fill-reducing ordering for each.
+
 \cgalHasModel `CGAL::Surface_mesh_seam_optimization::Default_sparse_solver_traits` (the default)
 \cgalHasModel `CGAL::Surface_mesh_seam_optimization::Eigen_simplicial_ldlt_traits`
 \cgalHasModel `CGAL::Surface_mesh_seam_optimization::Cholmod_traits` (when SuiteSparse is found)

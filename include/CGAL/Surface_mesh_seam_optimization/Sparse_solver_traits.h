@@ -283,19 +283,20 @@ public:
   /// whether the last analysed pattern is factorized by 2x2 blocks (below the threshold)
   bool uses_blocks() const { return m_blocks && !m_fallback; }
 
-  bool analyze_pattern(const Matrix& A)
+  bool analyze_pattern(const Matrix& A) { return analyze(A, nullptr); }
+
+  /// `analyze_pattern()` with the 2x2 blocks (vertices) eliminated in the
+  /// order given where the matrix is factorized by blocks (`block_ordering[v]`:
+  /// the position of block `v`, a permutation), instead of an AMD ordering of
+  /// its own; otherwise the same as `analyze_pattern()`
+  bool analyze_pattern(const Matrix& A, const std::vector<int>& block_ordering) { return analyze(A, &block_ordering); }
+
+  /// the order of the 2x2 blocks of the last pattern analysed (as for
+  /// `analyze_pattern()`), empty unless it is factorized by blocks
+  const std::vector<int>& block_ordering() const
   {
-    m_fallback = false;
-    m_blocks = false;
-    // (the Hessians of UV maps; other patterns by scalars)
-    std::vector<int> graph_outer, graph_inner;
-    const bool blocks = internal::Block_ldlt::block_graph(A, graph_outer, graph_inner);
-#ifdef CGAL_SMSO_HAS_CHOLMOD
-    m_large = A.rows() >= (blocks ? m_block_threshold : m_threshold);
-    if(m_large) return m_supernodal.analyze_pattern(A);
-#endif
-    m_blocks = blocks && m_block->analyze_blocks(A, graph_outer, graph_inner);
-    return m_blocks || m_ldlt.analyze_pattern(A);
+    static const std::vector<int> none;
+    return uses_blocks() ? m_block->ordering() : none;
   }
   bool factorize(const Matrix& A)
   {
@@ -321,6 +322,21 @@ public:
   }
 
 private:
+  bool analyze(const Matrix& A, const std::vector<int>* block_ordering)
+  {
+    m_fallback = false;
+    m_blocks = false;
+    // (the Hessians of UV maps; other patterns by scalars)
+    std::vector<int> graph_outer, graph_inner;
+    const bool blocks = internal::Block_ldlt::block_graph(A, graph_outer, graph_inner);
+#ifdef CGAL_SMSO_HAS_CHOLMOD
+    m_large = A.rows() >= (blocks ? m_block_threshold : m_threshold);
+    if(m_large) return m_supernodal.analyze_pattern(A);
+#endif
+    m_blocks = blocks && m_block->analyze_blocks(A, graph_outer, graph_inner, block_ordering);
+    return m_blocks || m_ldlt.analyze_pattern(A);
+  }
+
   Eigen::Index m_threshold, m_block_threshold;
   bool m_large = false, m_fallback = false, m_blocks = false;
   Eigen_simplicial_ldlt_traits m_ldlt;

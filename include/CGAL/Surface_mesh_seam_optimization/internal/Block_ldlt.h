@@ -85,8 +85,10 @@ public:
 
   // analyze() of an A whose graph of blocks the caller has (block_graph()
   // scans the whole pattern: the caller that chose the solver by it passes
-  // it on rather than scanning again)
-  bool analyze_blocks(const Matrix& A, const std::vector<int>& graph_outer, const std::vector<int>& graph_inner)
+  // it on rather than scanning again). `ordering`: the new index of each
+  // vertex (a permutation of them) instead of AMD's.
+  bool analyze_blocks(const Matrix& A, const std::vector<int>& graph_outer, const std::vector<int>& graph_inner,
+                      const std::vector<int>* ordering = nullptr)
   {
     m_n = 0;
     const int n = int(A.rows() / 2);
@@ -97,6 +99,12 @@ public:
     std::copy(graph_outer.begin(), graph_outer.end(), G.outerIndexPtr());
     std::copy(graph_inner.begin(), graph_inner.end(), G.innerIndexPtr());
     std::fill(G.valuePtr(), G.valuePtr() + graph_inner.size(), 1.);
+    if(ordering)
+    {
+      if(ordering->size() != std::size_t(n)) return false;
+      m_perm = *ordering;
+    }
+    else
     {
       Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
       Eigen::AMDOrdering<int>()(G.selfadjointView<Eigen::Lower>(), inverse);
@@ -322,6 +330,8 @@ public:
 
   // blocks of L below the diagonal (each 4 entries)
   std::size_t factor_blocks() const { return m_li.size(); }
+  // the new index of each vertex in the last analysis (see analyze_blocks())
+  const std::vector<int>& ordering() const { return m_perm; }
 
 private:
   // L_ki = Y_i^T D_i^-1 into its slot `end` of column i, D_k -= L_ki Y_i
