@@ -58,6 +58,15 @@ auto visitor_parameter(const NamedParameters& np)
 template <typename Visitor>
 Visitor& unwrap_visitor(Visitor& visitor) { return visitor; }
 
+template <typename Visitor>
+Visitor& unwrap_visitor(std::reference_wrapper<Visitor>& visitor)
+{
+  static_assert(!std::is_const<Visitor>::value,
+                "the visitor is called through a const reference: pass it by value or as std::ref(v) "
+                "to a non-const visitor (a visitor that cannot be copied must be passed as std::ref(v))");
+  return visitor.get();
+}
+
 // Whether a visitor reads the progress it is given, so that a run can skip
 // the figures nobody reads (the seam length is a pass over the mesh at every
 // Newton iteration). The default visitor does not; an internal one says so by
@@ -74,15 +83,6 @@ bool visitor_reads_progress(const Visitor&, long)
 }
 template <typename Visitor>
 bool visitor_reads_progress(const Visitor& visitor) { return visitor_reads_progress(visitor, 0); }
-
-template <typename Visitor>
-Visitor& unwrap_visitor(std::reference_wrapper<Visitor>& visitor)
-{
-  static_assert(!std::is_const<Visitor>::value,
-                "the visitor is called through a const reference: pass it by value or as std::ref(v) "
-                "to a non-const visitor (a visitor that cannot be copied must be passed as std::ref(v))");
-  return visitor.get();
-}
 
 } // namespace internal
 

@@ -94,11 +94,6 @@ public:
     const int n = int(A.rows() / 2);
     const int* outer = A.outerIndexPtr();
     const int* inner = A.innerIndexPtr();
-    Matrix G(n, n);
-    G.resizeNonZeros(Eigen::Index(graph_inner.size()));
-    std::copy(graph_outer.begin(), graph_outer.end(), G.outerIndexPtr());
-    std::copy(graph_inner.begin(), graph_inner.end(), G.innerIndexPtr());
-    std::fill(G.valuePtr(), G.valuePtr() + graph_inner.size(), 1.);
     if(ordering)
     {
       if(ordering->size() != std::size_t(n)) return false;
@@ -106,6 +101,12 @@ public:
     }
     else
     {
+      // (the graph as a matrix only for Eigen's AMD)
+      Matrix G(n, n);
+      G.resizeNonZeros(Eigen::Index(graph_inner.size()));
+      std::copy(graph_outer.begin(), graph_outer.end(), G.outerIndexPtr());
+      std::copy(graph_inner.begin(), graph_inner.end(), G.innerIndexPtr());
+      std::fill(G.valuePtr(), G.valuePtr() + graph_inner.size(), 1.);
       Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> inverse;
       Eigen::AMDOrdering<int>()(G.selfadjointView<Eigen::Lower>(), inverse);
       m_perm.resize(std::size_t(n));
@@ -113,8 +114,8 @@ public:
     }
     // the upper triangle of the permuted graph, by column; the slot of each
     // stored entry of A in its block (4 values per block, row-major)
-    const int* Gouter = G.outerIndexPtr();
-    const int* Ginner = G.innerIndexPtr();
+    const int* Gouter = graph_outer.data();
+    const int* Ginner = graph_inner.data();
     m_up.assign(std::size_t(n) + 1, 0);
     for(int C = 0; C < n; ++C)
       for(int q = Gouter[C]; q < Gouter[C + 1]; ++q)
