@@ -643,6 +643,43 @@ BOOST_AUTO_TEST_CASE(straightening_detours_shortens_the_seams_within_the_bound)
   BOOST_TEST(se_on < 0.97 * se_off);
 }
 
+BOOST_AUTO_TEST_CASE(the_progress_reports_the_seams_as_they_are)
+{
+  // progress() computes the seam length once per labelling (it keys it on the
+  // Newton pattern, and a topology operation drops it): whatever the path
+  // (planck_s1 bijective: a restart at the first overlap, the scaffold, the
+  // straightening's deferred batches, the polish's undone tries), every
+  // figure a visitor gets must be that of the seams at that moment.
+  typedef SMSO::Symmetric_Dirichlet_energy Energy;
+  Core_setup setup("planck_s1.obj");
+  SMSO::internal::Cut_mesh& cm = setup.cm;
+  BOOST_REQUIRE(setup.settings.bijective);
+  struct Checking_visitor
+  {
+    const SMSO::internal::Cut_mesh* cm;
+    std::size_t calls = 0, operations = 0, wrong = 0;
+    double worst = 0;
+    bool check(const SMSO::Seam_optimization_progress& p)
+    {
+      ++calls;
+      const double now = cm->seam_length() / cm->normalization_radius();
+      if(p.seam_length_normalized != now) { ++wrong; worst = (std::max)(worst, std::abs(p.seam_length_normalized - now)); }
+      return true;
+    }
+    bool on_iteration(const SMSO::Seam_optimization_progress& p) { return check(p); }
+    bool on_topology_operation(const SMSO::Seam_optimization_progress& p) { ++operations; return check(p); }
+    bool on_lambda_update(const SMSO::Seam_optimization_progress& p) { return check(p); }
+  } visitor{&cm};
+  SMSO::internal::Alternating_optimization<Energy, SMSO::Eigen_simplicial_ldlt_traits, Checking_visitor>
+    optimizer(cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), setup.weight, setup.settings, visitor);
+  BOOST_TEST(optimizer.run() == SMSO::OK);
+  BOOST_TEST_MESSAGE("planck_s1: " << visitor.calls << " progress reports, " << visitor.operations
+                     << " topology operations, " << optimizer.scaffold_rebuilds() << " scaffold meshings");
+  BOOST_TEST(visitor.operations > 50u);
+  BOOST_TEST(optimizer.scaffold_rebuilds() > 0u);
+  BOOST_TEST(visitor.wrong == 0u, visitor.wrong << " reports off by up to " << visitor.worst);
+}
+
 namespace {
 
 // The alternation with its descent open to the test.

@@ -209,7 +209,17 @@ public:
     p.iterations = m_newton.iterations();
     p.topology_operations = m_operations;
     p.distortion = m_newton.energy();
-    if(visitor_reads_progress(m_visitor)) p.seam_length_normalized = m_cm.seam_length() / m_cm.normalization_radius();
+    if(visitor_reads_progress(m_visitor))
+    {
+      // (a pass over the mesh: once per labelling, not at every iteration)
+      if(!m_progress_seam_valid || m_progress_seam_pattern != m_newton.patterns())
+      {
+        m_progress_seam = m_cm.seam_length() / m_cm.normalization_radius();
+        m_progress_seam_pattern = m_newton.patterns();
+        m_progress_seam_valid = true;
+      }
+      p.seam_length_normalized = m_progress_seam;
+    }
     p.lambda = m_lambda;
     p.seconds = m_timer.time();
     return p;
@@ -360,6 +370,8 @@ protected:
   // (false).
   bool apply(const Operation& op)
   {
+    // (the seams change before the pattern is rebuilt, which a batch defers)
+    m_progress_seam_valid = false;
     Uv_snapshot before;
     if(scaffold_on()) before.save(m_cm);
     {
@@ -520,6 +532,11 @@ protected:
   double m_best_se = 0, m_best_lambda = 0;
   Uv_snapshot m_best;
   CGAL::Real_timer m_timer;
+  // progress()'s seam length and the Newton pattern it was computed for: the
+  // seams change only with the labelling, after which the pattern is rebuilt
+  mutable double m_progress_seam = 0;
+  mutable std::size_t m_progress_seam_pattern = 0;
+  mutable bool m_progress_seam_valid = false;
 };
 
 } // namespace internal

@@ -172,6 +172,7 @@ public:
   // Call after any change of the corner -> UV labelling or of the scaffold.
   bool rebuild_pattern()
   {
+    ++m_patterns;
     Phase_timer timer(m_timings.symbolic_analysis);
     const std::size_t ne = number_of_elements();
     const int ndof = int(2 * m_cm.number_of_uv_vertices() + (has_scaffold() ? m_scaffold->pos.size() : 0));
@@ -227,6 +228,8 @@ public:
   double last_decrease() const { return m_last_decrease; }
   double gradient_norm2() const { return m_gradient_norm2; }
   std::size_t iterations() const { return m_iterations; }
+  // calls of rebuild_pattern() so far (each follows a change of the labelling)
+  std::size_t patterns() const { return m_patterns; }
   // (a run taking over another's counts on from its iterations)
   void continue_count(std::size_t iterations) { m_iterations = iterations; }
   // iterations whose step needed a new factorization (the others reused the last one)
@@ -582,6 +585,7 @@ private:
   std::vector<double> m_trial, m_extrapolated;
   double m_energy_value = 0, m_last_step = 0, m_last_decrease = 0, m_gradient_norm2 = 0;
   std::size_t m_iterations = 0;
+  std::size_t m_patterns = 0;
   bool m_reuse_factor = false; // the last factorization may precondition the next step (same pattern, no stall since)
   std::size_t m_factorizations = 0, m_exact_steps = 0;
   bool m_full_step = false; // the last step was full: the next may try the exact curvature
