@@ -10,11 +10,13 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <CGAL/Surface_mesh_seam_optimization/ARAP_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/Conformal_energy.h>
 #include <CGAL/Surface_mesh_seam_optimization/measure.h>
 #include <CGAL/Surface_mesh_seam_optimization/Seam_optimizer.h>
+#include <CGAL/Surface_mesh_seam_optimization/minimize_distortion.h>
 #include <CGAL/Surface_mesh_seam_optimization/optimize_seams.h>
 #include <CGAL/Surface_mesh_seam_optimization/seam_visibility.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
@@ -1326,6 +1328,92 @@ BOOST_AUTO_TEST_CASE(a_slit_joins_the_border_along_a_shortest_path)
   BOOST_TEST(on_border == 1u);
   BOOST_TEST(SMSO::internal::join_slits_to_border(sm, get(CGAL::vertex_point, sm), seam) == 0u);
   BOOST_TEST(std::abs(seam_length() - 4.) < 1e-12);
+}
+
+// An open tube (two boundary loops at its ends): with the holes kept its
+// map is an annulus, far from isometric, and no single boundary split pays
+// until a cut joins the two loops. The holes are joined first: the tube
+// unrolls along one shortest path from end to end (3D length 10), at E_SD 4.
+BOOST_AUTO_TEST_CASE(a_tube_is_cut_open_from_end_to_end)
+{
+  const int around = 16, along = 40;
+  const double length = 10;
+  Surface_mesh sm;
+  std::vector<Surface_mesh::Vertex_index> v;
+  for(int j = 0; j <= along; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      const double a = 2 * CGAL_PI * i / around;
+      v.push_back(sm.add_vertex(K::Point_3(std::cos(a), std::sin(a), length * j / along)));
+    }
+  auto at = [&](int i, int j) { return v[std::size_t(j * around + (i % around))]; };
+  for(int j = 0; j < along; ++j)
+    for(int i = 0; i < around; ++i)
+    {
+      sm.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      sm.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  BOOST_REQUIRE(sm.number_of_faces() == std::size_t(2 * around * along));
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  Seam_map seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+
+  // its map with the holes kept is far above the bound
+  {
+    UV_map kept_uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:kept_uv").first;
+    Seam_map kept_seam = sm.add_property_map<edge_descriptor, bool>("e:kept_seam", false).first;
+    const SMSO::Optimization_result kept =
+      SMSO::minimize_distortion(sm, kept_uv, SMSO_np::edge_is_seam_map(kept_seam));
+    BOOST_TEST_REQUIRE(kept.status == SMSO::OK);
+    BOOST_TEST(kept.distortion_at_optimal_scale > 5.);
+  }
+
+  const SMSO::Optimization_result r = SMSO::optimize_seams(sm, uv, SMSO_np::edge_is_seam_map(seam));
+  BOOST_TEST_MESSAGE("tube: " << r.message << ", E_SD " << r.distortion << ", seams " << r.seam_length);
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(r.message.find("holes joined") != std::string::npos);
+  BOOST_TEST(r.bound_met);
+  BOOST_TEST(r.distortion_at_optimal_scale < 4.01);
+  BOOST_TEST(r.charts == 1u);
+  BOOST_TEST(r.bijective);
+  // one path from end to end: as long as the tube, and it joins the two loops
+  BOOST_TEST(r.seam_length >= length * (1 - 1e-9));
+  BOOST_TEST(r.seam_length <= length * 1.05);
+  std::set<double> seam_heights;
+  for(edge_descriptor e : sm.edges())
+    if(seam[e])
+      for(auto w : { sm.source(sm.halfedge(e)), sm.target(sm.halfedge(e)) }) seam_heights.insert(sm.point(w).z());
+  BOOST_TEST(seam_heights.size() == std::size_t(along + 1));
+  const SMSO::Uv_map_measures m = SMSO::measure_uv_map(sm, uv, SMSO_np::edge_is_seam_map(seam));
+  BOOST_TEST(m.status == SMSO::OK);
+  BOOST_TEST(m.flipped_triangles == 0u);
+  BOOST_TEST(m.overlapping_triangle_pairs == 0u);
+  BOOST_TEST(std::abs(m.seam_length - r.seam_length) <= 1e-9 * length);
+}
+
+// A planar square with a square hole: its map with the hole kept meets the
+// bound, so nothing is joined (no seam at all).
+BOOST_AUTO_TEST_CASE(a_hole_whose_map_meets_the_bound_is_not_joined)
+{
+  Surface_mesh sm;
+  CGAL::make_grid(8, 8, sm, [](std::size_t i, std::size_t j) { return K::Point_3(double(i), double(j), 0.); }, true);
+  std::vector<Surface_mesh::Face_index> hole;
+  for(auto f : sm.faces())
+  {
+    double x = 0, y = 0;
+    for(auto w : CGAL::vertices_around_face(sm.halfedge(f), sm)) { x += sm.point(w).x() / 3; y += sm.point(w).y() / 3; }
+    if(x > 3 && x < 5 && y > 3 && y < 5) hole.push_back(f);
+  }
+  BOOST_REQUIRE(hole.size() == 8u);
+  for(auto f : hole) CGAL::Euler::remove_face(sm.halfedge(f), sm);
+  sm.collect_garbage();
+  UV_map uv = sm.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  Seam_map seam = sm.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  const SMSO::Optimization_result r = SMSO::optimize_seams(sm, uv, SMSO_np::edge_is_seam_map(seam));
+  BOOST_TEST_REQUIRE(r.status == SMSO::OK);
+  BOOST_TEST(r.message.find("holes joined") == std::string::npos);
+  BOOST_TEST(r.bound_met);
+  BOOST_TEST(r.seam_length == 0.);
+  BOOST_TEST(r.charts == 1u);
 }
 
 // A stop asked by the user's visitor (called by the first start only) stops

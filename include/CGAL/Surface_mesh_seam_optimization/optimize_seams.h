@@ -544,6 +544,111 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
   }
 }
 
+// A chart with holes (several boundary loops) keeps them in the initial
+// map. Where a hole is as large as the chart's other loop, as at the two
+// ends of a tube, that map is far from isometric (CGAL's blade.off: E_SD 40,
+// where the tube cut open from end to end unrolls at 4.00), and the greedy
+// topology steps cannot find the cure: a cut pays only once it joins the two
+// loops, so they buy hundreds of short ones (blade: E_SD still 42.9 after
+// 540 s). So where the map with the holes kept misses the bound, the holes
+// are also joined to their component's largest loop along shortest paths,
+// and the run starts from those seams if their map is less distorted (else
+// as before, in the time left). Returns false (and leaves `result` alone)
+// when there is no hole to join: the caller runs the mesh.
+template <typename TriangleMesh, typename UVMap, typename NamedParameters>
+bool optimize_seams_with_joined_holes(const TriangleMesh& tm, UVMap uvmap, const NamedParameters& np,
+                                      Optimization_result& result)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
+                                                 Symmetric_Dirichlet_energy()))> Energy;
+  typedef typename boost::property_traits<UVMap>::value_type Point_2;
+  // (a fixed lambda, regional seam costs and the user's own start keep the direct run)
+  if constexpr(!std::is_same_v<Energy, Symmetric_Dirichlet_energy> ||
+               !is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+    return false;
+  else
+  {
+    // seam costs other than 1 (maps of 1 change nothing)
+    auto all_one = [](const auto& range, const auto& map) {
+      for(const auto x : range) if(!(double(get(map, x)) == 1.)) return false;
+      return true;
+    };
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::seam_cost_map_t>::value)
+      if(!all_one(edges(tm), get_parameter(np, internal_np::seam_cost_map))) return false;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
+      if(!all_one(edges(tm), get_parameter(np, internal_np::edge_seam_weight_map))) return false;
+    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_seam_cost_map_t>::value)
+      if(!all_one(vertices(tm), get_parameter(np, internal_np::vertex_seam_cost_map))) return false;
+    if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
+       choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
+      return false;
+    if(faces(tm).empty() || !CGAL::is_triangle_mesh(tm)) return false; // (the run reports it)
+    CGAL::Real_timer timer;
+    timer.start();
+    auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                get_const_property_map(CGAL::vertex_point, tm));
+    auto kept_seam = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+    auto joined_seam = get(CGAL::dynamic_edge_property_t<bool>(), tm);
+    for(auto e : edges(tm))
+    {
+      bool seam = false;
+      if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+        seam = get(get_parameter(np, internal_np::edge_is_seam_map), e);
+      put(kept_seam, e, seam);
+      put(joined_seam, e, seam);
+    }
+    for(auto v : vertices(tm))
+    {
+      const auto p = get(vpm, v);
+      for(int k = 0; k < 3; ++k) if(!std::isfinite(CGAL::to_double(p[k]))) return false; // (the run reports it)
+    }
+    // (cheap: most meshes have no hole to join)
+    if(join_slits_to_border(tm, vpm, joined_seam, true) == 0) return false;
+    double bound = 0;
+    std::string ignored;
+    if(!read_distortion_bound(np, Symmetric_Dirichlet_energy(), bound, ignored)) return false;
+    double limit = std::numeric_limits<double>::infinity();
+    if(!read_time_limit(np, limit)) return false;
+    auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), tm);
+    auto minimized = [&](auto seam) {
+      return minimize_distortion_impl(tm, uv, parameters::vertex_point_map(vpm).edge_is_seam_map(seam)
+                                                .distortion_bound(bound)
+                                                .time_limit((std::max)(limit - timer.time(), 1e-9)), nullptr);
+    };
+    // (the run as without holes to join, in the time left)
+    auto as_before = [&] {
+      if(std::isfinite(limit))
+      {
+        const auto left = np.time_limit((std::max)(limit - timer.time(), 1e-9));
+        if(!optimize_seams_through_proxy(tm, uvmap, left, result)) result = optimize_seams_impl(tm, uvmap, left);
+      }
+      else if(!optimize_seams_through_proxy(tm, uvmap, np, result))
+        result = optimize_seams_impl(tm, uvmap, np);
+      result.seconds = timer.time();
+      return true;
+    };
+    const Optimization_result kept = minimized(kept_seam);
+    if(kept.status != OK || kept.bound_met) return as_before();
+    const Optimization_result joined = minimized(joined_seam);
+    if(joined.status != OK || !(joined.distortion_at_optimal_scale < kept.distortion_at_optimal_scale))
+      return as_before();
+    result = optimize_seams_impl(tm, uvmap, np.edge_is_seam_map(joined_seam)
+                                               .time_limit((std::max)(limit - timer.time(), 1e-9)));
+    if(result.has_result())
+      if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
+        for(auto e : edges(tm)) put(get_parameter(np, internal_np::edge_is_seam_map), e, get(joined_seam, e));
+    result.seconds = timer.time();
+    const std::string note = "holes joined to the border (their map with the holes kept: E_SD " +
+                             std::to_string(kept.distortion_at_optimal_scale) + ", joined: " +
+                             std::to_string(joined.distortion_at_optimal_scale) + ")";
+    result.message = result.message.empty() ? note : note + "; " + result.message;
+    return true;
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshSeamOptimizationFunctions
@@ -556,7 +661,10 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
 ///   (for every halfedge `h` with a face, the UV of `target(h)` in `face(h)`)
 ///
 /// \param tm a triangle mesh of any genus, with any number of boundary loops and connected
-///   components (see `compute_initial_parameterization()` for how it is cut into charts first)
+///   components (see `compute_initial_parameterization()` for how it is cut into charts first;
+///   in bound mode, where the map with a chart's holes kept misses the bound, the holes are
+///   joined to the chart's largest loop by shortest paths if that map is less distorted, and
+///   `Optimization_result::message` says so)
 /// \param uvmap receives the UV map
 /// \param np an optional sequence of \ref PkgSurfaceMeshSeamOptimizationNamedParameters "named parameters"
 ///   among the ones listed below, chained in any order
@@ -810,6 +918,7 @@ Optimization_result optimize_seams(const TriangleMesh& tm, UVMap uvmap,
     }
   }
 
+  if(internal::optimize_seams_with_joined_holes(tm, uvmap, np, result)) return result;
   if(internal::optimize_seams_through_proxy(tm, uvmap, np, result)) return result;
   return internal::optimize_seams_impl(tm, uvmap, np);
 }

@@ -30,8 +30,12 @@ namespace internal {
 // the nearest such one, along a shortest path (3D edge lengths) through
 // vertices on no seam, whose edges become seams. Returns the number of
 // paths added; a slit no such path reaches stays as it is.
+// With `holes_too`, only the largest tree of border loops (and seams) of
+// each component counts as its border: the other loops, the holes of
+// its charts, are joined to it as slits are.
 template <typename TriangleMesh, typename VertexPointMap, typename EdgeSeamMap>
-std::size_t join_slits_to_border(const TriangleMesh& tm, VertexPointMap vpm, EdgeSeamMap seam)
+std::size_t join_slits_to_border(const TriangleMesh& tm, VertexPointMap vpm, EdgeSeamMap seam,
+                                 bool holes_too = false)
 {
   typedef boost::graph_traits<TriangleMesh> GT;
   typedef typename GT::vertex_descriptor vertex_descriptor;
@@ -59,23 +63,29 @@ std::size_t join_slits_to_border(const TriangleMesh& tm, VertexPointMap vpm, Edg
     on_cut[a] = on_cut[b] = 1;
     cuts.unite(a, b);
   }
+  std::vector<char> touches_border(n, 0);
   for(auto e : edges(tm))
-    if(is_border(e, tm)) anchored[cuts.find(get(index, source(halfedge(e, tm), tm)))] = 1;
-  // a closed component: its largest seam tree stands for the border
-  std::vector<int> best(n, -1);
-  std::vector<char> part_anchored(n, 0);
+    if(is_border(e, tm)) touches_border[cuts.find(get(index, source(halfedge(e, tm), tm)))] = 1;
   for(int v = 0; v < n; ++v)
-    if(on_cut[v])
-    {
-      ++size[cuts.find(v)];
-      if(anchored[cuts.find(v)]) part_anchored[parts.find(v)] = 1;
-    }
+    if(on_cut[v]) ++size[cuts.find(v)];
+  // per component, its largest seam tree, and its largest tree on the border
+  std::vector<int> best(n, -1), best_border(n, -1);
   for(int v = 0; v < n; ++v)
   {
     if(!on_cut[v] || cuts.find(v) != v) continue;
     int& b = best[parts.find(v)];
     if(b < 0 || size[v] > size[b]) b = v;
+    if(!touches_border[v]) continue;
+    if(!holes_too) { anchored[v] = 1; continue; }
+    int& bb = best_border[parts.find(v)];
+    if(bb < 0 || size[v] > size[bb]) bb = v;
   }
+  for(int p = 0; p < n; ++p)
+    if(best_border[p] >= 0) anchored[best_border[p]] = 1;
+  // a closed component: its largest seam tree stands for the border
+  std::vector<char> part_anchored(n, 0);
+  for(int v = 0; v < n; ++v)
+    if(on_cut[v] && anchored[cuts.find(v)]) part_anchored[parts.find(v)] = 1;
   for(int p = 0; p < n; ++p)
     if(best[p] >= 0 && !part_anchored[p]) anchored[best[p]] = 1;
 
