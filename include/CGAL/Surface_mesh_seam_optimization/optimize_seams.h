@@ -404,6 +404,25 @@ Optimization_result optimize_seams_impl(const TriangleMesh& tm, UVMap uvmap, con
   return result;
 }
 
+// Whether the seam costs given are all 1 (maps of 1 change nothing).
+template <typename TriangleMesh, typename NamedParameters>
+bool unit_seam_costs(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  auto all_one = [](const auto& range, const auto& map) {
+    for(const auto x : range) if(!(double(get(map, x)) == 1.)) return false;
+    return true;
+  };
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::seam_cost_map_t>::value)
+    if(!all_one(edges(tm), get_parameter(np, internal_np::seam_cost_map))) return false;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
+    if(!all_one(edges(tm), get_parameter(np, internal_np::edge_seam_weight_map))) return false;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_seam_cost_map_t>::value)
+    if(!all_one(vertices(tm), get_parameter(np, internal_np::vertex_seam_cost_map))) return false;
+  return true;
+}
+
 // A dense mesh: seams and map optimized on a proxy first, then carried to
 // the mesh, whose own run (one start, no recut rounds: the proxy's run did the
 // global search) has only local work left. Returns false (and leaves
@@ -429,17 +448,7 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
   else
   {
     if(proxy_faces == 0 || num_faces(tm) <= 2 * proxy_faces) return false;
-    // seam costs other than 1 (maps of 1 change nothing)
-    auto all_one = [](const auto& range, const auto& map) {
-      for(const auto x : range) if(double(get(map, x)) != 1.) return false;
-      return true;
-    };
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::seam_cost_map_t>::value)
-      if(!all_one(edges(tm), get_parameter(np, internal_np::seam_cost_map))) return false;
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
-      if(!all_one(edges(tm), get_parameter(np, internal_np::edge_seam_weight_map))) return false;
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_seam_cost_map_t>::value)
-      if(!all_one(vertices(tm), get_parameter(np, internal_np::vertex_seam_cost_map))) return false;
+    if(!unit_seam_costs(tm, np)) return false;
     if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
        choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
       return false;
@@ -571,17 +580,7 @@ bool optimize_seams_with_joined_holes(const TriangleMesh& tm, UVMap uvmap, const
     return false;
   else
   {
-    // seam costs other than 1 (maps of 1 change nothing)
-    auto all_one = [](const auto& range, const auto& map) {
-      for(const auto x : range) if(!(double(get(map, x)) == 1.)) return false;
-      return true;
-    };
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::seam_cost_map_t>::value)
-      if(!all_one(edges(tm), get_parameter(np, internal_np::seam_cost_map))) return false;
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_seam_weight_map_t>::value)
-      if(!all_one(edges(tm), get_parameter(np, internal_np::edge_seam_weight_map))) return false;
-    if constexpr(!is_default_parameter<NamedParameters, internal_np::vertex_seam_cost_map_t>::value)
-      if(!all_one(vertices(tm), get_parameter(np, internal_np::vertex_seam_cost_map))) return false;
+    if(!unit_seam_costs(tm, np)) return false;
     if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
        choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
       return false;
