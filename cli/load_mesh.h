@@ -106,10 +106,10 @@ inline bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::stri
   if(!internal::check_input_file(path, failure))
     return false;
   const std::string ext = lowercase_extension(path);
-  if(ext != ".obj" && ext != ".off" && ext != ".ply")
+  if(ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
   {
     failure = {"ERROR_INPUT", "cannot read '" + path + "': unsupported format '" + ext +
-                              "' (expected .obj, .off or .ply)"};
+                              "' (expected .obj, .off, .ply or .stl)"};
     return false;
   }
 
@@ -159,6 +159,18 @@ inline bool load_mesh(const std::string& path, Mesh& mesh, std::vector<std::stri
     {
       failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
                              "input face " + std::to_string(f + 1) + " has fewer than three corners" + try_repair);
+      return false;
+    }
+    // (CGAL's soup functions need distinct corners: a face "0 1 0 2" made
+    // orient_polygon_soup() loop forever)
+    std::vector<std::size_t> sorted(poly.begin(), poly.end());
+    std::sort(sorted.begin(), sorted.end());
+    const auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
+    if(repeated != sorted.end())
+    {
+      failure = code_failure(SMSO::ERROR_DEGENERATE_TRIANGLE,
+                             "input face " + std::to_string(f + 1) + " has vertex " + std::to_string(*repeated) +
+                               " (numbered from 0) at two of its corners" + try_repair);
       return false;
     }
     has_polygons = has_polygons || poly.size() > 3;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Surface_mesh_seam_optimization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// OBJ, OFF and PLY (ASCII and binary) polygon soups read with bounded work:
+// OBJ, OFF, PLY and STL (ASCII and binary) polygon soups read with bounded work:
 // a count written in a file is checked against the bytes left before
 // anything is allocated for it (CGAL 5.5's readers trust them: a 98-byte OFF
 // announcing 2e9 corners allocated 15.6 GB), and every malformed or
@@ -652,9 +652,175 @@ bool read_ply_soup(const std::string& data, std::vector<Point>& points,
   return true;
 }
 
+// STL is a triangle soup with three points per facet: the points shared by
+// facets (equal coordinates, bit for bit up to the sign of zero) become one
+// vertex, numbered in order of first appearance, so that the facets are
+// connected. Non-finite points are kept apart (the caller names them).
+template <typename Point>
+void merge_stl_corners(const std::vector<std::array<double, 3> >& corner, std::vector<Point>& points,
+                       std::vector<std::vector<std::size_t> >& polygons)
+{
+  const std::size_t n = corner.size();
+  std::vector<std::size_t> order;
+  order.reserve(n);
+  for(std::size_t c = 0; c < n; ++c)
+    if(std::isfinite(corner[c][0]) && std::isfinite(corner[c][1]) && std::isfinite(corner[c][2]))
+      order.push_back(c);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return corner[a] < corner[b] || (corner[a] == corner[b] && a < b);
+  });
+  std::vector<std::size_t> first(n);
+  for(std::size_t c = 0; c < n; ++c)
+    first[c] = c;
+  for(std::size_t k = 1; k < order.size(); ++k)
+    if(corner[order[k]] == corner[order[k - 1]])
+      first[order[k]] = first[order[k - 1]];
+  std::vector<std::size_t> id(n);
+  points.clear();
+  for(std::size_t c = 0; c < n; ++c)
+  {
+    if(first[c] == c)
+    {
+      id[c] = points.size();
+      points.emplace_back(corner[c][0], corner[c][1], corner[c][2]);
+    }
+    else
+      id[c] = id[first[c]];
+  }
+  polygons.assign(n / 3, std::vector<std::size_t>(3));
+  for(std::size_t f = 0; f < n / 3; ++f)
+    for(int k = 0; k < 3; ++k)
+      polygons[f][k] = id[3 * f + k];
+}
+
+// STL, binary (80-byte header, a facet count, 50 bytes per facet, little
+// endian; recognized by its size, since some begin with "solid" too) or
+// ASCII ("solid ... facet normal ... outer loop vertex x y z (x3) endloop
+// endfacet ... endsolid", several solids allowed). Normals are ignored: the
+// corners' order orients a facet.
+template <typename Point>
+bool read_stl_soup(const std::string& data, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons, std::string& error)
+{
+  std::vector<std::array<double, 3> > corner;
+  if(data.size() >= 84)
+  {
+    const unsigned char* u = reinterpret_cast<const unsigned char*>(data.data());
+    const std::uint64_t nf = std::uint64_t(u[80]) | std::uint64_t(u[81]) << 8 | std::uint64_t(u[82]) << 16 |
+                             std::uint64_t(u[83]) << 24;
+    if(84 + 50 * nf == data.size())
+    {
+      corner.reserve(3 * nf);
+      for(std::uint64_t f = 0; f < nf; ++f)
+        for(int k = 0; k < 3; ++k)
+        {
+          std::array<double, 3> p;
+          for(int j = 0; j < 3; ++j)
+            p[j] = ply_binary_value(u + 84 + 50 * f + 12 + 12 * k + 4 * j, 4, true, true, false);
+          corner.push_back(p);
+        }
+      merge_stl_corners(corner, points, polygons);
+      return true;
+    }
+  }
+  // (text has no NUL byte; a binary facet nearly always has one)
+  if(std::memchr(data.data(), 0, data.size()) != nullptr)
+  {
+    error = "not an STL file: binary, but " + std::to_string(data.size()) +
+            " bytes is not 84 plus 50 per facet of the count it gives" +
+            (data.size() >= 84 ? std::string() : " (shorter than its 84-byte header)");
+    return false;
+  }
+  // ASCII: a stream of keywords and numbers, line numbers for messages
+  Line_cursor cur(data.data(), data.data() + data.size());
+  std::vector<std::string> tok;
+  std::size_t next_tok = 0;
+  const char* b; const char* e;
+  auto next = [&](std::string& t) {
+    while(next_tok == tok.size())
+    {
+      if(!cur.next(b, e))
+        return false;
+      split_tokens(b, e, tok, false);
+      next_tok = 0;
+    }
+    t = tok[next_tok++];
+    return true;
+  };
+  auto fail = [&](const std::string& what) {
+    error = "line " + std::to_string(cur.line) + ": " + what;
+    return false;
+  };
+  std::string t;
+  if(!next(t) || t != "solid")
+  {
+    if(data.size() >= 84)
+      error = "not an STL file: neither ASCII (it does not begin with 'solid') nor binary (" +
+              std::to_string(data.size()) + " bytes is not 84 plus 50 per facet of the count it gives)";
+    else
+      error = "not an STL file (" + std::to_string(data.size()) + " bytes, no 'solid')";
+    return false;
+  }
+  auto expect = [&](const char* word) {
+    if(!next(t))
+      return fail(std::string("the file ends where '") + word + "' is expected");
+    if(t != word)
+      return fail(std::string("'") + word + "' expected, not " + quote_token(t));
+    return true;
+  };
+  bool in_solid = true;
+  // (a solid's name runs to the end of its line)
+  next_tok = tok.size();
+  while(next(t))
+  {
+    if(!in_solid)
+    {
+      if(t != "solid")
+        return fail("data after 'endsolid': " + quote_token(t));
+      in_solid = true;
+      next_tok = tok.size();
+      continue;
+    }
+    if(t == "endsolid")
+    {
+      in_solid = false;
+      next_tok = tok.size();
+      continue;
+    }
+    if(t != "facet")
+      return fail("'facet' or 'endsolid' expected, not " + quote_token(t));
+    if(!expect("normal"))
+      return false;
+    for(int j = 0; j < 3; ++j)
+    {
+      double x;
+      if(!next(t) || !parse_number_token(t, x))
+        return fail("a facet normal needs 3 numbers");
+    }
+    if(!expect("outer") || !expect("loop"))
+      return false;
+    for(int k = 0; k < 3; ++k)
+    {
+      if(!expect("vertex"))
+        return false;
+      std::array<double, 3> p;
+      for(int j = 0; j < 3; ++j)
+        if(!next(t) || !parse_number_token(t, p[j]))
+          return fail("a vertex needs 3 numbers");
+      corner.push_back(p);
+    }
+    if(!expect("endloop") || !expect("endfacet"))
+      return false;
+  }
+  if(in_solid)
+    return fail("the file ends without 'endsolid'");
+  merge_stl_corners(corner, points, polygons);
+  return true;
+}
+
 } // namespace internal
 
-// Reads `path` (.obj, .off or .ply, by `extension`, lowercase with the dot)
+// Reads `path` (.obj, .off, .ply or .stl, by `extension`, lowercase with the dot)
 // into a soup. False with a one-line reason in `error` (no file name).
 template <typename Point>
 bool read_polygon_soup_bounded(const std::string& path, const std::string& extension, std::vector<Point>& points,
@@ -681,6 +847,8 @@ bool read_polygon_soup_bounded(const std::string& path, const std::string& exten
     return internal::read_off_soup(data, points, polygons, error);
   if(extension == ".ply")
     return internal::read_ply_soup(data, points, polygons, error);
+  if(extension == ".stl")
+    return internal::read_stl_soup(data, points, polygons, error);
   error = "unsupported format";
   return false;
 }

@@ -33,6 +33,7 @@ struct Repair_summary
   std::size_t nonfinite_faces_removed = 0;      // faces using a non-finite coordinate
   std::size_t duplicate_points_merged = 0;      // points at the same position
   std::size_t polygons_simplified = 0;          // a corner repeated consecutively, still >= 3 corners
+  std::size_t pinched_faces_split = 0;          // a corner repeated apart: one face per loop
   std::size_t invalid_faces_removed = 0;        // fewer than three distinct corners
   std::size_t duplicate_faces_removed = 0;      // same corners as another face
   std::size_t isolated_points_removed = 0;      // used by no face
@@ -47,6 +48,7 @@ struct Repair_summary
     return {{"nonfinite_faces_removed", nonfinite_faces_removed},
             {"duplicate_points_merged", duplicate_points_merged},
             {"polygons_simplified", polygons_simplified},
+            {"pinched_faces_split", pinched_faces_split},
             {"invalid_faces_removed", invalid_faces_removed},
             {"duplicate_faces_removed", duplicate_faces_removed},
             {"isolated_points_removed", isolated_points_removed},
@@ -70,6 +72,8 @@ struct Repair_summary
         "faces with a non-finite coordinate removed");
     add(duplicate_points_merged, "duplicate point merged", "duplicate points merged");
     add(polygons_simplified, "face with a repeated corner simplified", "faces with a repeated corner simplified");
+    add(pinched_faces_split, "face with a corner repeated apart split into its loops",
+        "faces with a corner repeated apart split into their loops");
     add(invalid_faces_removed, "face with fewer than 3 corners removed", "faces with fewer than 3 corners removed");
     add(duplicate_faces_removed, "duplicate face removed", "duplicate faces removed");
     add(isolated_points_removed, "unused point removed", "unused points removed");
@@ -114,6 +118,7 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<Polygon>& polyg
   // of these two steps are internal in CGAL 5.5).
   std::vector<Polygon> kept;
   kept.reserve(polygons.size());
+  std::vector<std::size_t> position(points.size(), std::size_t(-1));
   for(Polygon& poly : polygons)
   {
     Polygon simple;
@@ -127,7 +132,31 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<Polygon>& polyg
     }
     if(simple.size() != poly.size())
       ++summary.polygons_simplified;
-    kept.push_back(std::move(simple));
+    // A corner repeated apart pinches the face into loops (CGAL's soup steps
+    // need distinct corners): each loop of three corners or more is a face.
+    Polygon rest;
+    std::size_t loops = 0;
+    for(std::size_t v : simple)
+    {
+      if(position[v] != std::size_t(-1))
+      {
+        Polygon loop(rest.begin() + std::ptrdiff_t(position[v]), rest.end());
+        for(std::size_t k = position[v] + 1; k < rest.size(); ++k)
+          position[rest[k]] = std::size_t(-1);
+        rest.resize(position[v] + 1);
+        ++loops;
+        if(loop.size() >= 3)
+          kept.push_back(std::move(loop));
+        continue;
+      }
+      position[v] = rest.size();
+      rest.push_back(v);
+    }
+    for(std::size_t v : rest)
+      position[v] = std::size_t(-1);
+    summary.pinched_faces_split += loops > 0 ? 1 : 0;
+    if(rest.size() >= 3)
+      kept.push_back(std::move(rest));
   }
   polygons.swap(kept);
   summary.duplicate_faces_removed = PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);

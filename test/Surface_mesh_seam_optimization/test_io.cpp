@@ -3,7 +3,7 @@
 //
 // OBJ with per-corner UVs: write then read back, vt deduplication, reader
 // errors; optimize_seams' input loading (cli/load_mesh.h) under a few hundred
-// deterministic mutations of small OBJ, OFF and PLY files.
+// deterministic mutations of small OBJ, OFF, PLY and STL files.
 
 #define BOOST_TEST_MODULE io
 #include <boost/test/unit_test.hpp>
@@ -377,6 +377,47 @@ std::string seed_ply_binary()
   return s;
 }
 
+// The grid as an STL triangle soup: three points per facet, shared points
+// written again each time (the reader merges them).
+std::string seed_stl_ascii()
+{
+  std::ostringstream os;
+  os << "solid grid\n";
+  const auto p = grid_points();
+  for(const auto& t : grid_triangles())
+  {
+    os << "  facet normal 0 0 1\n    outer loop\n";
+    for(int v : t)
+      os << "      vertex " << p[v][0] << " " << p[v][1] << " " << p[v][2] << "\n";
+    os << "    endloop\n  endfacet\n";
+  }
+  os << "endsolid grid\n";
+  return os.str();
+}
+
+// Binary: its 80-byte header begins with "solid", as some writers' do.
+std::string seed_stl_binary()
+{
+  std::string s = "solid grid (binary)";
+  s.resize(80, ' ');
+  const auto p = grid_points();
+  const std::uint32_t n = static_cast<std::uint32_t>(grid_triangles().size());
+  s.append(reinterpret_cast<const char*>(&n), 4);   // little endian (x86-64, aarch64)
+  for(const auto& t : grid_triangles())
+  {
+    const float normal[3] = {0.f, 0.f, 1.f};
+    s.append(reinterpret_cast<const char*>(normal), 12);
+    for(int v : t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const float x = static_cast<float>(p[v][k]);
+        s.append(reinterpret_cast<const char*>(&x), 4);
+      }
+    s.append(2, '\0');
+  }
+  return s;
+}
+
 // One deterministic mutation of `s` (the generator's raw output only: the
 // standard distributions are not the same on every library).
 std::string mutate(const std::string& s, std::mt19937& rng, bool binary)
@@ -502,6 +543,55 @@ std::size_t max_rss_kb()
 
 } // namespace
 
+// An STL soup becomes the mesh its OFF describes: equal points merged (the
+// grid's 54 corners are its 16 vertices), numbered in order of first
+// appearance, facets connected; a broken file names what is wrong.
+BOOST_AUTO_TEST_CASE(stl_soups_load_as_connected_meshes)
+{
+  const std::string dir = (std::filesystem::temp_directory_path() /
+                           ("smso_stl_" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  auto load = [&](const std::string& name, const std::string& text, CLI::Mesh& mesh, CLI::Load_failure& failure) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path, std::ios::binary) << text;
+    std::vector<std::string> notes;
+    return CLI::load_mesh(path, mesh, notes, failure);
+  };
+  const auto p = grid_points();
+  for(const std::string& text : {seed_stl_ascii(), seed_stl_binary()})
+  {
+    CLI::Mesh mesh;
+    CLI::Load_failure failure;
+    BOOST_REQUIRE_MESSAGE(load("grid.stl", text, mesh, failure), failure.line);
+    BOOST_CHECK_EQUAL(num_vertices(mesh), 16u);
+    BOOST_CHECK_EQUAL(num_faces(mesh), 18u);
+    BOOST_CHECK_EQUAL(num_edges(mesh), 33u);   // 16 - 33 + 18 = 1: one disk, not 18 loose triangles
+    // first appearance: the first facet (0, 1, 5) gives vertices 0, 1, 2
+    const int first[3] = {0, 1, 5};
+    for(int k = 0; k < 3; ++k)
+      BOOST_CHECK_CLOSE(mesh.point(CLI::Mesh::Vertex_index(k)).x() + 1., p[first[k]][0] + 1., 1e-3);
+  }
+  CLI::Mesh mesh;
+  CLI::Load_failure failure;
+  std::string broken = seed_stl_ascii();
+  broken.resize(broken.rfind("endsolid"));
+  BOOST_CHECK(!load("no_end.stl", broken, mesh, failure));
+  BOOST_CHECK_MESSAGE(failure.line.find("without 'endsolid'") != std::string::npos, failure.line);
+  std::string bad_vertex = seed_stl_ascii();
+  bad_vertex.replace(bad_vertex.find("vertex"), 6, "vortex");
+  BOOST_CHECK(!load("vortex.stl", bad_vertex, mesh, failure));
+  BOOST_CHECK_MESSAGE(failure.line.find("line 4: 'vertex' expected") != std::string::npos, failure.line);
+  std::string short_binary = seed_stl_binary();
+  short_binary.pop_back();   // 84 + 50 n + 49 bytes: neither binary nor ASCII
+  BOOST_CHECK(!load("short.stl", short_binary, mesh, failure));
+  BOOST_CHECK_MESSAGE(failure.line.find("not an STL file") != std::string::npos, failure.line);
+  std::string nan_point = seed_stl_ascii();
+  nan_point.replace(nan_point.find("vertex ") + 7, 1, "nan");
+  BOOST_CHECK(!load("nan.stl", nan_point, mesh, failure));
+  BOOST_CHECK_EQUAL(failure.status, "ERROR_NON_FINITE_COORDINATES");
+  std::filesystem::remove_all(dir);
+}
+
 // Every mutation is refused with one clean line (no control character) or
 // gives a valid triangle mesh, within 0.5 s each and without a memory spike
 // (the unfixed readers took 15.6 GB for a 98-byte OFF). Under a sanitizer
@@ -509,7 +599,9 @@ std::size_t max_rss_kb()
 BOOST_AUTO_TEST_CASE(loader_survives_mutated_files)
 {
   const std::pair<std::string, std::string> seeds[] = {
-    {".obj", seed_obj()}, {".off", seed_off()}, {".ply", seed_ply_ascii()}, {".ply", seed_ply_binary()}};
+    {".obj", seed_obj()}, {".off", seed_off()}, {".ply", seed_ply_ascii()}, {".ply", seed_ply_binary()},
+    {".stl", seed_stl_ascii()}, {".stl", seed_stl_binary()}};
+  const int n_seeds = int(sizeof(seeds) / sizeof(seeds[0]));
   const std::string dir = (std::filesystem::temp_directory_path() /
                            ("smso_fuzz_" + std::to_string(::getpid()))).string();
   std::filesystem::create_directories(dir);
@@ -536,10 +628,10 @@ BOOST_AUTO_TEST_CASE(loader_survives_mutated_files)
   std::size_t accepted = 0, refused = 0, repaired = 0, with_uv = 0;
   double slowest = 0;
   const int per_seed = 250;
-  for(int k = 0; k < 4 * per_seed; ++k)
+  for(int k = 0; k < n_seeds * per_seed; ++k)
   {
-    const auto& seed = seeds[k % 4];
-    const std::string text = mutate(seed.second, rng, k % 4 == 3);
+    const auto& seed = seeds[k % n_seeds];
+    const std::string text = mutate(seed.second, rng, k % n_seeds == 3 || k % n_seeds == 5);
     const std::string path = dir + "/m" + std::to_string(k) + seed.first;
     std::ofstream(path, std::ios::binary) << text;
     for(int repair = 0; repair < 2; ++repair)
@@ -601,7 +693,7 @@ BOOST_AUTO_TEST_CASE(loader_survives_mutated_files)
   }
   std::filesystem::remove_all(dir);
   const std::size_t grown_mb = (max_rss_kb() - rss_before) / 1024;
-  BOOST_TEST_MESSAGE("fuzz: " << 4 * per_seed << " mutations, " << accepted << " accepted, " << refused
+  BOOST_TEST_MESSAGE("fuzz: " << n_seeds * per_seed << " mutations, " << accepted << " accepted, " << refused
                      << " refused, " << repaired << " accepted with --repair, " << with_uv
                      << " read with their UVs; slowest " << slowest << " s; peak memory grew by " << grown_mb
                      << " MB");

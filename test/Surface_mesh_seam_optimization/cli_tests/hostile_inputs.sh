@@ -115,6 +115,20 @@ with open('far_vertex.obj', 'w') as f:
             a = j * (n + 1) + i + 1
             f.write("f %d %d %d\nf %d %d %d\n" % (a, a + 1, a + n + 2, a, a + n + 2, a + n + 1))
 PY
+# A face with a corner repeated apart ("0 1 0 2") made CGAL's orientation of
+# the soup loop forever, and --repair's duplicate-face step abort; now it is
+# refused, and --repair keeps each loop of three corners or more as a face.
+printf 'OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n4 0 1 0 2\n3 1 2 3\n' >pinched.off
+refused pinched.off "input face 1 has vertex 0 (numbered from 0) at two of its corners (--repair fixes this)"
+printf 'OFF\n6 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n3 3 1\n6 0 1 2 0 3 4\n' >pinched2.off
+timeout 20 "$BIN" pinched2.off --repair --keep-seams -o pinched2.obj --report pinched2.json --quiet >out.txt 2>err.txt ||
+  fail "pinched2.off --repair: exit code $? ($(cat err.txt))"
+[ "$(grep -c '^f ' pinched2.obj)" -eq 2 ] || fail "pinched2.off --repair: expected its 2 loops as faces"
+grep -q '"pinched_faces_split": 1' pinched2.json || fail "pinched2.off --repair: the report does not count the split"
+# STL: a binary file shorter than its facet count says is refused as such
+python3 -c "
+import struct; open('short.stl','wb').write(b'solid x'.ljust(80, b' ') + struct.pack('<I', 2) + bytes(50))"
+refused short.stl "not an STL file: binary, but 134 bytes is not 84 plus 50 per facet"
 "$BIN" far_vertex.obj --keep-seams -o far.obj --quiet >out.txt 2>err.txt
 ! grep -qi "zero.area" err.txt || fail "far vertex: a healthy face is blamed: $(cat err.txt)"
 echo "ok"
