@@ -423,6 +423,30 @@ bool unit_seam_costs(const TriangleMesh& tm, const NamedParameters& np)
   return true;
 }
 
+// Whether a call may run from a start computed for it (a proxy's seams,
+// holes joined): bound mode on E_SD, no fixed lambda, no user start, OptCuts'
+// cuts and unit seam costs, the settings under which such a start is judged
+// by the E_SD of its map alone. The compile-time part keeps the other
+// energies from instantiating those paths.
+template <typename NamedParameters>
+constexpr bool may_substitute_start_v =
+  std::is_same_v<std::decay_t<decltype(parameters::choose_parameter(
+                   parameters::get_parameter(std::declval<const NamedParameters&>(), internal_np::energy),
+                   Symmetric_Dirichlet_energy()))>, Symmetric_Dirichlet_energy> &&
+  parameters::is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value;
+
+template <typename TriangleMesh, typename NamedParameters>
+bool may_substitute_start(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if constexpr(!may_substitute_start_v<NamedParameters>) return false;
+  else
+    return !choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) &&
+           choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) == OPTCUTS &&
+           unit_seam_costs(tm, np);
+}
+
 // A dense mesh: seams and map optimized on a proxy first, then carried to
 // the mesh, whose own run (one start, no recut rounds: the proxy's run did the
 // global search) has only local work left. Returns false (and leaves
@@ -434,24 +458,18 @@ bool optimize_seams_through_proxy(const TriangleMesh& tm, UVMap uvmap, const Nam
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
-  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
-                                                 Symmetric_Dirichlet_energy()))> Energy;
   typedef typename boost::property_traits<UVMap>::value_type Point_2;
 
   const std::size_t proxy_faces = choose_parameter(get_parameter(np, internal_np::proxy_number_of_faces),
                                                    default_proxy_number_of_faces);
   // the options the proxy has no counterpart for (maps on the input's
   // elements, a start given by the user, a fixed lambda) keep the direct run
-  if constexpr(!std::is_same_v<Energy, Symmetric_Dirichlet_energy> ||
-               !is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+  if constexpr(!may_substitute_start_v<NamedParameters>)
     return false;
   else
   {
     if(proxy_faces == 0 || num_faces(tm) <= 2 * proxy_faces) return false;
-    if(!unit_seam_costs(tm, np)) return false;
-    if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
-       choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
-      return false;
+    if(!may_substitute_start(tm, np)) return false;
     if constexpr(!is_default_parameter<NamedParameters, internal_np::edge_is_seam_map_t>::value)
       for(auto e : edges(tm))
         if(get(get_parameter(np, internal_np::edge_is_seam_map), e)) return false; // initial seams given
@@ -571,19 +589,13 @@ bool optimize_seams_with_joined_holes(const TriangleMesh& tm, UVMap uvmap, const
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using parameters::is_default_parameter;
-  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, internal_np::energy),
-                                                 Symmetric_Dirichlet_energy()))> Energy;
   typedef typename boost::property_traits<UVMap>::value_type Point_2;
   // (a fixed lambda, regional seam costs and the user's own start keep the direct run)
-  if constexpr(!std::is_same_v<Energy, Symmetric_Dirichlet_energy> ||
-               !is_default_parameter<NamedParameters, internal_np::seam_weight_t>::value)
+  if constexpr(!may_substitute_start_v<NamedParameters>)
     return false;
   else
   {
-    if(!unit_seam_costs(tm, np)) return false;
-    if(choose_parameter(get_parameter(np, internal_np::use_uv_map_as_initial), false) ||
-       choose_parameter(get_parameter(np, internal_np::cut_strategy), OPTCUTS) != OPTCUTS)
-      return false;
+    if(!may_substitute_start(tm, np)) return false;
     if(faces(tm).empty() || !CGAL::is_triangle_mesh(tm)) return false; // (the run reports it)
     CGAL::Real_timer timer;
     timer.start();
