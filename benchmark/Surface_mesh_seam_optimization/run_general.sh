@@ -8,8 +8,10 @@
 # input's topology (genus, boundary loops, components) is computed here.
 #
 # Usage: run_general.sh [--build-dir DIR] [--data-dir DIR] [--cgal-dir DIR]
-#                       [--timeout S] [--out PREFIX] [--quick] [mesh path ...]
-#   --quick   only the meshes under 5000 faces
+#                       [--timeout S] [--out PREFIX] [--quick] [--all-cgal] [mesh path ...]
+#   --quick     only the meshes under 5000 faces
+#   --all-cgal  every mesh of CGAL's data/meshes (OFF, OBJ, PLY, STL; ~140,
+#               of which ~90 under 5000 faces), not only the list below
 # Writes PREFIX.md (default benchmark/results_general). Results are not
 # asserted: the exit code is non-zero only if the program is missing.
 set -u
@@ -22,6 +24,7 @@ cgal_dir=
 timeout_s=900
 out_prefix=$repo/benchmark/results_general
 quick=0
+all_cgal=0
 explicit=()
 while (($#)); do
   case $1 in
@@ -31,6 +34,7 @@ while (($#)); do
     --timeout) timeout_s=$2; shift ;;
     --out) out_prefix=$2; shift ;;
     --quick) quick=1 ;;
+    --all-cgal) all_cgal=1 ;;
     *) explicit+=("$1") ;;
   esac
   shift
@@ -64,7 +68,11 @@ else
   for d in high_genus multi_component edge_cases invalid; do
     for f in "$data_dir"/$d/*.obj; do [[ -e $f ]] && inputs+=("$f"); done
   done
-  for n in "${cgal_meshes[@]}"; do [[ -e $cgal_dir/$n.off ]] && inputs+=("$cgal_dir/$n.off"); done
+  if ((all_cgal)); then
+    for f in "$cgal_dir"/*.{off,obj,ply,stl}; do [[ -e $f ]] && inputs+=("$f"); done
+  else
+    for n in "${cgal_meshes[@]}"; do [[ -e $cgal_dir/$n.off ]] && inputs+=("$cgal_dir/$n.off"); done
+  fi
 fi
 
 work=$(mktemp -d /tmp/smso_general.XXXXXX)
@@ -83,6 +91,31 @@ if p.endswith('.off'):
     if len(h) == 1: i = 2
     V, nf = int(nums[0]), int(nums[1])
     for t in toks[i + V:i + V + nf]: F.append([int(x) for x in t[1:1 + int(t[0])]])
+elif p.endswith('.ply'):   # ASCII only (a binary one gives no face)
+    lines = open(p, errors='replace').read().split('\n')
+    counts, k = {}, 0
+    while k < len(lines) and lines[k].strip() != 'end_header':
+        t = lines[k].split()
+        if t[:1] == ['element']: counts[t[1]] = int(t[2])
+        if t[:1] == ['format'] and t[1] != 'ascii': counts = {}; break
+        k += 1
+    V = counts.get('vertex', 0)
+    for l in lines[k + 1 + V:k + 1 + V + counts.get('face', 0)]:
+        t = l.split(); F.append([int(x) for x in t[1:1 + int(t[0])]])
+elif p.endswith('.stl'):   # equal points merged, as the program does
+    import struct
+    data = open(p, 'rb').read()
+    pts = []
+    if len(data) >= 84 and 84 + 50 * struct.unpack('<I', data[80:84])[0] == len(data):
+        for f in range(struct.unpack('<I', data[80:84])[0]):
+            for k in range(3): pts.append(struct.unpack('<3f', data[84 + 50 * f + 12 + 12 * k:96 + 50 * f + 12 * k + 12]))
+    else:
+        t = data.decode(errors='replace').split()
+        pts = [tuple(float(x) for x in t[i + 1:i + 4]) for i in range(len(t)) if t[i] == 'vertex']
+    ids = {}
+    for q in pts: ids.setdefault(q, len(ids))
+    V = len(ids)
+    F = [[ids[q] for q in pts[i:i + 3]] for i in range(0, len(pts) - 2, 3)]
 else:
     for l in open(p, errors='replace'):
         t = l.split()
@@ -128,22 +161,25 @@ md=$out_prefix.md
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 } >"$md"
 
+index=0
 for f in "${inputs[@]}"; do
   name=$(basename "$f"); name=${name%.*}
+  [[ $f == *.obj || $f == *.off ]] || name=$(basename "$f")   # (sphere.off, sphere.ply and sphere.stl apart)
+  index=$((index + 1))
   read -r faces genus loops comps < <(topology "$f")
   if ((quick)) && ((faces > 5000)); then continue; fi
   extra=()
   [[ $f == */invalid/* ]] && extra+=(--repair)
   start=$(date +%s.%N)
-  timeout "$timeout_s" "$bin" "$f" -o "$work/$name.obj" --report "$work/$name.json" --quiet "${extra[@]}" \
-    >"$work/$name.out" 2>"$work/$name.err"
+  w=$work/$index
+  timeout "$timeout_s" "$bin" "$f" -o "$w.obj" --report "$w.json" --quiet "${extra[@]}" >"$w.out" 2>"$w.err"
   rc=$?
   secs=$(python3 -c "import time; print('%.1f' % (time.time() - $start))")
-  status=$(python3 -c "import json; print(json.load(open('$work/$name.json'))['status'])" 2>/dev/null)
+  status=$(python3 -c "import json; print(json.load(open('$w.json'))['status'])" 2>/dev/null)
   [[ $rc -eq 124 ]] && status="timeout ${timeout_s} s"
-  [[ -z $status ]] && status="exit $rc: $(head -c 80 "$work/$name.err" | tr '\n|' '  ')"
-  if [[ -s $work/$name.obj ]]; then
-    row=$(python3 "$uvmetrics" "$work/$name.obj" --json --bound 4.1 2>/dev/null | python3 -c "
+  [[ -z $status ]] && status="exit $rc: $(head -c 80 "$w.err" | tr '\n|' '  ')"
+  if [[ -s $w.obj ]]; then
+    row=$(python3 "$uvmetrics" "$w.obj" --json --bound 4.1 2>/dev/null | python3 -c "
 import json, sys
 r = json.load(sys.stdin)
 print('%.4f | %.3f | %d | %s | %d | %d' % (r['e_sd'], r['seam_length_normalized'], r['charts'],
