@@ -526,6 +526,13 @@ BOOST_AUTO_TEST_CASE(coarse_meshes_cut_the_free_map_where_it_overlaps)
       BOOST_TEST(bijective.bound_met);
       BOOST_TEST(bijective.seam_length_normalized < 2 * free.seam_length_normalized);
       BOOST_TEST(bijective.charts < num_faces(m) / 4);
+      // the replacement is one start without the scaffold from the same cut;
+      // its iterations are counted with the bijective run's
+      const SMSO::Optimization_result free_one =
+          SMSO::optimize_seams(m, uv, SMSO_np::bijective(false).number_of_starts(1));
+      BOOST_TEST_REQUIRE(free_one.status == SMSO::OK);
+      BOOST_TEST(bijective.iterations > free_one.iterations);
+      BOOST_TEST(bijective.topology_operations > free_one.topology_operations);
     }
   }
 }

@@ -237,8 +237,8 @@ public:
     internal::measure_result(m_cm, m_energy, m_settings.distortion_bound, r, &m_weight);
     r.initial_distortion = m_initial_distortion;
     r.lambda = m_core->lambda();
-    r.iterations = m_core->iterations();
-    r.topology_operations = m_core->topology_operations();
+    r.iterations = m_core->iterations() + m_replacement_iterations;
+    r.topology_operations = m_core->topology_operations() + m_replacement_operations;
     r.scaffold_rebuilds = m_core->scaffold_rebuilds();
     r.timings = m_core->timings();
     r.seconds = m_timer.time();
@@ -308,6 +308,8 @@ private:
     if(internal::count_overlapping_pairs(cm, 1) > 0 || !free.bound_met()) return;
     if(!(free.seam_cost() < m_core->seam_cost())) return;
     m_cm = std::move(cm);
+    m_replacement_iterations = free.iterations();
+    m_replacement_operations = free.topology_operations();
     if(m_message.empty()) m_message = "the bijective run's detached triangles replaced by a run without the "
                                       "scaffold, cut where its charts overlapped";
   }
@@ -328,6 +330,8 @@ private:
   std::string m_message;
   bool m_running = false;
   double m_initial_distortion = 0;
+  // (the run without the scaffold of split_free_result(), counted with the rest)
+  std::size_t m_replacement_iterations = 0, m_replacement_operations = 0;
   CGAL::Real_timer m_timer;
 };
 
