@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/pack_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/Sparse_solver_traits.h>
 #include <CGAL/Surface_mesh_seam_optimization/Symmetric_Dirichlet_energy.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Alternating_optimization.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Block_ldlt.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Element_energy.h>
@@ -21,6 +22,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Flip_free_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Join_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Parallel_starts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Scaffold_mesher.h>
@@ -1911,6 +1913,108 @@ BOOST_AUTO_TEST_CASE(a_chart_overlapping_itself_all_along_is_cut_until_no_chart_
   BOOST_TEST(n == cuts + 1); // each cut splits one chart in two
   BOOST_TEST(corner_uvs(cm) == before);
   BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
+}
+
+// Charts cut through (no seam tip: no corner merge can zip them) are glued
+// back: the flat 9 x 9 grid cut along y = 4 from border to border, its upper
+// chart moved rigidly far away, comes back as one isometric chart; with the
+// hole at (7,7) and cuts from it to the border on both sides (two shared
+// paths), as one chart with the hole.
+BOOST_AUTO_TEST_CASE(charts_cut_through_are_glued_back_along_their_shared_seams)
+{
+  for(const bool hole : { false, true })
+  {
+    BOOST_TEST_CONTEXT("hole " << hole)
+    {
+      Grid_cut g(hole);
+      if(hole)
+      {
+        std::vector<std::pair<int, int> > edges{ { g.id(8, 7), g.id(9, 7) } };
+        for(int x = 0; x < 6; ++x) edges.emplace_back(g.id(x, 7), g.id(x + 1, 7));
+        g.cut_edges(edges);
+      }
+      else g.cut_along({ { 0, 4 }, { 1, 4 }, { 2, 4 }, { 3, 4 }, { 4, 4 }, { 5, 4 }, { 6, 4 }, { 7, 4 }, { 8, 4 }, { 9, 4 } });
+      g.map_as_in_3d();
+      Cut_mesh& cm = g.cm;
+      std::vector<int> chart;
+      BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
+      const double cut_y = hole ? 7 : 4;
+      // the upper chart turned by 0.7 rad and moved by (30, -7)
+      std::vector<char> upper(cm.number_of_uv_vertices(), 0);
+      for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+        for(int i = 0; i < 3; ++i)
+          if(cm.points[3 * cm.corner_vertex[3 * f + i] + 1] > cut_y)
+            for(int k = 0; k < 3; ++k) upper[cm.corner_uv[3 * f + k]] = 1;
+      for(std::size_t u = 0; u < upper.size(); ++u)
+        if(upper[u])
+        {
+          const double x = cm.uv[2 * u], y = cm.uv[2 * u + 1];
+          cm.uv[2 * u] = 30 + std::cos(0.7) * x - std::sin(0.7) * y;
+          cm.uv[2 * u + 1] = -7 + std::sin(0.7) * x + std::cos(0.7) * y;
+        }
+      const std::vector<SMSO::internal::Chart_join> joins = SMSO::internal::chart_joins(cm, nullptr);
+      BOOST_REQUIRE(joins.size() == 1u);
+      BOOST_TEST(joins[0].saving == (hole ? 7. : 9.), boost::test_tools::tolerance(1e-12));
+      BOOST_REQUIRE(SMSO::internal::join_two_charts(cm, SMSO::internal::Vertex_corners(cm), joins[0]));
+      BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+      BOOST_TEST(cm.compute_charts(chart) == 1u);
+      BOOST_TEST(cm.number_of_uv_vertices() == cm.number_of_vertices()); // no seam left
+      BOOST_TEST(cm.seam_length() == 0.);
+      // a rigid motion of the grid: every UV edge as long as in 3D, no flip
+      double worst = 0;
+      for(std::size_t h = 0; h < cm.corner_vertex.size(); ++h)
+      {
+        const double* a = &cm.uv[2 * cm.corner_uv[h]];
+        const double* b = &cm.uv[2 * cm.corner_uv[Cut_mesh::prev(int(h))]];
+        worst = (std::max)(worst, std::abs(std::hypot(a[0] - b[0], a[1] - b[1]) - cm.edge_length(int(h))));
+      }
+      BOOST_TEST(worst < 1e-9);
+      for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_TEST(cm.signed_uv_area2(f) > 0);
+      BOOST_TEST(SMSO::internal::chart_joins(cm, nullptr).empty());
+    }
+  }
+}
+
+// In bound mode the alternation glues them back where no merge is left: the
+// grid cut through at y = 4, mapped isometrically with its upper chart
+// moved 3 up (apart: a bijective start may not touch itself), ends as one
+// chart with no seam (it kept both charts and 9 units of seam before), with
+// or without the scaffold.
+BOOST_AUTO_TEST_CASE(the_alternation_glues_charts_cut_through_back_below_the_bound)
+{
+  typedef SMSO::Symmetric_Dirichlet_energy Energy;
+  for(const bool bijective : { false, true })
+  {
+    BOOST_TEST_CONTEXT("bijective " << bijective)
+    {
+      Grid_cut g;
+      g.cut_along({ { 0, 4 }, { 1, 4 }, { 2, 4 }, { 3, 4 }, { 4, 4 }, { 5, 4 }, { 6, 4 }, { 7, 4 }, { 8, 4 }, { 9, 4 } });
+      g.map_as_in_3d();
+      Cut_mesh& cm = g.cm;
+      std::vector<int> chart;
+      BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
+      std::vector<char> upper(cm.number_of_uv_vertices(), 0);
+      for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+        for(int i = 0; i < 3; ++i)
+          if(cm.points[3 * cm.corner_vertex[3 * f + i] + 1] > 4)
+            for(int k = 0; k < 3; ++k) upper[cm.corner_uv[3 * f + k]] = 1;
+      for(std::size_t u = 0; u < upper.size(); ++u)
+        if(upper[u]) cm.uv[2 * u + 1] += 3;
+      SMSO::internal::Alternating_settings settings;
+      settings.bijective = bijective;
+      const std::vector<double> weight(cm.corner_vertex.size(), 1.);
+      SMSO::Default_seam_optimization_visitor visitor;
+      SMSO::internal::Alternating_optimization<Energy, SMSO::Eigen_simplicial_ldlt_traits,
+                                               SMSO::Default_seam_optimization_visitor>
+        optimizer(cm, Energy(), SMSO::Eigen_simplicial_ldlt_traits(), weight, settings, visitor);
+      BOOST_TEST(optimizer.run() == SMSO::OK);
+      BOOST_TEST(optimizer.distortion() <= 4.1);
+      BOOST_TEST(cm.compute_charts(chart) == 1u);
+      BOOST_TEST(cm.seam_length() == 0.);
+      BOOST_TEST(SMSO::internal::check_invariants(cm).empty());
+      for(std::size_t f = 0; f < cm.number_of_faces(); ++f) BOOST_TEST(cm.signed_uv_area2(f) > 0);
+    }
+  }
 }
 
 namespace {

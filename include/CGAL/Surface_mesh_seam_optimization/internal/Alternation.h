@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_seam_optimization/internal/Defaults.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Dual_step.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Invariants.h>
+#include <CGAL/Surface_mesh_seam_optimization/internal/Join_charts.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Projected_newton.h>
 #include <CGAL/Surface_mesh_seam_optimization/internal/Topology_step.h>
 
@@ -186,8 +187,9 @@ public:
     }
     if(!m_settings.fixed_lambda && !dual_update(e_sd, ops))
     {
-      if(m_cancelled) status = WARNING_CANCELLED;
-      return false;
+      if(m_cancelled) { status = WARNING_CANCELLED; return false; }
+      // below the bound with no merge left, charts cut apart may still be glued back
+      return e_sd <= m_settings.distortion_bound && join_charts(status, false);
     }
     // the most profitable operation that keeps the map bijective
     std::vector<std::pair<double, std::size_t> > order;
@@ -197,7 +199,13 @@ public:
     bool applied = false;
     for(const auto& o : order)
       if((applied = apply(ops[o.second]))) break;
-    if(!applied) return false; // stationary in topology too
+    if(!applied)
+    {
+      // (as above)
+      if(!m_settings.fixed_lambda && e_sd <= m_settings.distortion_bound && join_charts(status, false)) return true;
+      if(m_cancelled) status = WARNING_CANCELLED;
+      return false; // stationary in topology too
+    }
     if(m_cancelled) { status = WARNING_CANCELLED; return false; }
     status = descend();
     return status == OK;
@@ -348,7 +356,12 @@ protected:
         m_topology.shifts(ops);
       }
       const Operation* best = cheapest_per_seam_length(ops, failed);
-      if(!best) return OK;
+      if(!best)
+      {
+        Error_code status = OK;
+        if(join_charts(status, true)) { record(distortion(), seam_cost()); failed.clear(); continue; }
+        return m_cancelled ? WARNING_CANCELLED : status;
+      }
       Uv_snapshot before;
       before.save(m_cm);
       const std::pair<int, int> tried(best->uv_a, best->uv_b);
@@ -364,6 +377,60 @@ protected:
       ++failures;
     }
     return OK;
+  }
+
+  // Glues two charts back along the seams between them (Join_charts.h), the
+  // largest saving first, and keeps the first join that can be placed
+  // without overlap, descended. `within_bound`: only if the descent stays
+  // within the bound (the polish); else the alternation goes on from it, its
+  // dual step buying cuts back where they cost less than the join saved,
+  // the best feasible configuration kept as always (femur: 13.06 -> 11.88).
+  // Joins only ever lower the number of charts, so they end. False, the
+  // configuration as it was, when none is kept (five failures end the tries,
+  // as in the polish), or with `status` set when the descent ends the run.
+  bool join_charts(Error_code& status, bool within_bound)
+  {
+    const double b = m_settings.distortion_bound;
+    std::vector<Chart_join> joins;
+    {
+      Phase_timer timer(m_timings.topology);
+      joins = chart_joins(m_cm, &m_weight);
+    }
+    int failures = 0;
+    for(std::size_t k = 0; k < joins.size() && failures < 5; ++k)
+    {
+      Uv_snapshot before;
+      before.save(m_cm);
+      {
+        Phase_timer timer(m_timings.topology);
+        if(!join_two_charts(m_cm, m_topology.vertex_corners(), joins[k])) { ++failures; continue; }
+      }
+      m_progress_seam_valid = false;
+      lay_out_uv_components(m_cm); // (the glued chart may now lie on another)
+      const bool placed = scaffold_on() ? build_scaffold() : !(m_settings.bijective && count_overlapping_pairs(m_cm, 1) > 0);
+      if(!placed)
+      {
+        before.restore(m_cm);
+        if(scaffold_on()) build_scaffold();
+        if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
+        ++failures;
+        continue;
+      }
+      if(!m_newton.rebuild_pattern()) { status = ERROR_LINEAR_SOLVER; return false; }
+      m_tips.clear();
+      status = descend();
+      if(status != OK) return false;
+      if(!within_bound || distortion() <= b)
+      {
+        ++m_operations;
+        if(!m_visitor.on_topology_operation(progress())) { m_cancelled = true; status = WARNING_CANCELLED; return false; }
+        return true;
+      }
+      before.restore(m_cm);
+      if(!rebuild_scaffold()) { status = ERROR_LINEAR_SOLVER; return false; }
+      ++failures;
+    }
+    return false;
   }
 
   // Applies op; with a scaffold, an op whose result would overlap is undone
