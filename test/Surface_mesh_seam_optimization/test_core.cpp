@@ -1915,6 +1915,31 @@ BOOST_AUTO_TEST_CASE(a_chart_overlapping_itself_all_along_is_cut_until_no_chart_
   BOOST_TEST(SMSO::internal::split_self_overlapping_charts(cm) == 0u);
 }
 
+namespace {
+
+// The grid cut through along y = 4, from border to border: two charts.
+void cut_across_at_y4(Grid_cut& g)
+{
+  std::vector<std::pair<int, int> > path;
+  for(int x = 0; x <= 9; ++x) path.emplace_back(x, 4);
+  g.cut_along(path);
+}
+
+// `move(u, v)` applied to the UVs of the charts above y = `cut_y`.
+template <typename Move>
+void move_charts_above(Cut_mesh& cm, double cut_y, const Move& move)
+{
+  std::vector<char> upper(cm.number_of_uv_vertices(), 0);
+  for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
+    for(int i = 0; i < 3; ++i)
+      if(cm.points[3 * cm.corner_vertex[3 * f + i] + 1] > cut_y)
+        for(int k = 0; k < 3; ++k) upper[cm.corner_uv[3 * f + k]] = 1;
+  for(std::size_t u = 0; u < upper.size(); ++u)
+    if(upper[u]) move(cm.uv[2 * u], cm.uv[2 * u + 1]);
+}
+
+} // namespace
+
 // Charts cut through (no seam tip: no corner merge can zip them) are glued
 // back: the flat 9 x 9 grid cut along y = 4 from border to border, its upper
 // chart moved rigidly far away, comes back as one isometric chart; with the
@@ -1933,25 +1958,17 @@ BOOST_AUTO_TEST_CASE(charts_cut_through_are_glued_back_along_their_shared_seams)
         for(int x = 0; x < 6; ++x) edges.emplace_back(g.id(x, 7), g.id(x + 1, 7));
         g.cut_edges(edges);
       }
-      else g.cut_along({ { 0, 4 }, { 1, 4 }, { 2, 4 }, { 3, 4 }, { 4, 4 }, { 5, 4 }, { 6, 4 }, { 7, 4 }, { 8, 4 }, { 9, 4 } });
+      else cut_across_at_y4(g);
       g.map_as_in_3d();
       Cut_mesh& cm = g.cm;
       std::vector<int> chart;
       BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
-      const double cut_y = hole ? 7 : 4;
       // the upper chart turned by 0.7 rad and moved by (30, -7)
-      std::vector<char> upper(cm.number_of_uv_vertices(), 0);
-      for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
-        for(int i = 0; i < 3; ++i)
-          if(cm.points[3 * cm.corner_vertex[3 * f + i] + 1] > cut_y)
-            for(int k = 0; k < 3; ++k) upper[cm.corner_uv[3 * f + k]] = 1;
-      for(std::size_t u = 0; u < upper.size(); ++u)
-        if(upper[u])
-        {
-          const double x = cm.uv[2 * u], y = cm.uv[2 * u + 1];
-          cm.uv[2 * u] = 30 + std::cos(0.7) * x - std::sin(0.7) * y;
-          cm.uv[2 * u + 1] = -7 + std::sin(0.7) * x + std::cos(0.7) * y;
-        }
+      move_charts_above(cm, hole ? 7 : 4, [](double& u, double& v) {
+        const double x = u, y = v;
+        u = 30 + std::cos(0.7) * x - std::sin(0.7) * y;
+        v = -7 + std::sin(0.7) * x + std::cos(0.7) * y;
+      });
       const std::vector<SMSO::internal::Chart_join> joins = SMSO::internal::chart_joins(cm, nullptr);
       BOOST_REQUIRE(joins.size() == 1u);
       BOOST_TEST(joins[0].saving == (hole ? 7. : 9.), boost::test_tools::tolerance(1e-12));
@@ -1988,18 +2005,12 @@ BOOST_AUTO_TEST_CASE(the_alternation_glues_charts_cut_through_back_below_the_bou
     BOOST_TEST_CONTEXT("bijective " << bijective)
     {
       Grid_cut g;
-      g.cut_along({ { 0, 4 }, { 1, 4 }, { 2, 4 }, { 3, 4 }, { 4, 4 }, { 5, 4 }, { 6, 4 }, { 7, 4 }, { 8, 4 }, { 9, 4 } });
+      cut_across_at_y4(g);
       g.map_as_in_3d();
       Cut_mesh& cm = g.cm;
       std::vector<int> chart;
       BOOST_REQUIRE(cm.compute_charts(chart) == 2u);
-      std::vector<char> upper(cm.number_of_uv_vertices(), 0);
-      for(std::size_t f = 0; f < cm.number_of_faces(); ++f)
-        for(int i = 0; i < 3; ++i)
-          if(cm.points[3 * cm.corner_vertex[3 * f + i] + 1] > 4)
-            for(int k = 0; k < 3; ++k) upper[cm.corner_uv[3 * f + k]] = 1;
-      for(std::size_t u = 0; u < upper.size(); ++u)
-        if(upper[u]) cm.uv[2 * u + 1] += 3;
+      move_charts_above(cm, 4, [](double&, double& v) { v += 3; });
       SMSO::internal::Alternating_settings settings;
       settings.bijective = bijective;
       const std::vector<double> weight(cm.corner_vertex.size(), 1.);
