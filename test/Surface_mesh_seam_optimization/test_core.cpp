@@ -194,14 +194,15 @@ Cut_mesh curved_patch(double sx, double sy)
 
 // A tall bump (height 2.5 over a 2 x 2 square) pressed flat: its plan view
 // scaled by 0.7 as the map, so that many triangles are compressed.
-Cut_mesh pressed_bump()
+// (`n` x `n` squares, jittered; `height`: of the bump)
+Cut_mesh pressed_bump(int n = 14, double height = 2.5)
 {
-  Surface_mesh sm = planar_grid(14, 7);
+  Surface_mesh sm = planar_grid(n, 7);
   for(auto v : vertices(sm))
   {
     const Point_3 p = sm.point(v);
-    const double x = (p.x() - 7) / 7, y = (p.y() - 7) / 7;
-    sm.point(v) = Point_3(x, y, 2.5 * std::exp(-4 * (x * x + y * y)));
+    const double x = (p.x() - 0.5 * n) / (0.5 * n), y = (p.y() - 0.5 * n) / (0.5 * n);
+    sm.point(v) = Point_3(x, y, height * std::exp(-4 * (x * x + y * y)));
   }
   Cut_mesh cm = one_chart(sm);
   for(std::size_t u = 0; u < cm.number_of_uv_vertices(); ++u)
@@ -1202,6 +1203,42 @@ BOOST_AUTO_TEST_CASE(exact_curvature_steps_reach_the_same_minimum_in_fewer_itera
   BOOST_TEST(std::abs(e_exact - e_projected) <= 1e-9 * e_projected);
   BOOST_TEST(it_exact < it_projected);
   BOOST_TEST(f_exact < f_projected);
+}
+
+// With minimize_distortion()'s settings, a step after one the line search
+// shortened rarely converges with the stale factor; each failed try costs
+// solves that a factorization follows anyway. Backing off after failures
+// reaches the same minimum with fewer of them.
+BOOST_AUTO_TEST_CASE(stale_factor_tries_back_off_after_failures_and_reach_the_same_minimum)
+{
+  for(int mesh = 0; mesh < 2; ++mesh)
+  {
+    const Cut_mesh cm = mesh == 0 ? pressed_bump(40, 4.) : pressed_bump(30, 6.);
+    auto run = [&](bool backoff, std::size_t& tries, std::size_t& failures, std::size_t& iterations) {
+      Cut_mesh c = cm;
+      SMSO::internal::Newton_settings settings; // as minimize_distortion()
+      settings.extrapolation_limit = 16;
+      settings.exact_curvature_iterations = 10;
+      settings.relative_decrease_tolerance = 1e-13;
+      settings.stale_factor_backoff = backoff;
+      return descend(c, settings, 1000, [&](const auto& newton) {
+        for(std::size_t f = 0; f < c.number_of_faces(); ++f) BOOST_REQUIRE(c.signed_uv_area2(f) > 0);
+        tries = newton.stale_factor_tries();
+        failures = newton.stale_factor_failures();
+        iterations = newton.iterations();
+      });
+    };
+    std::size_t tries_always = 0, failures_always = 0, it_always = 0, tries = 0, failures = 0, it = 0;
+    const double e_always = run(false, tries_always, failures_always, it_always);
+    const double e = run(true, tries, failures, it);
+    BOOST_TEST_MESSAGE("mesh " << mesh << ": stale factor tried " << tries_always << " times (" << failures_always
+                       << " failed, " << it_always << " iterations), with the back-off " << tries << " (" << failures
+                       << " failed, " << it << " iterations); E_SD " << e_always << " " << e);
+    BOOST_TEST(failures_always >= 2u); // the case arises
+    BOOST_TEST(failures < failures_always);
+    BOOST_TEST(tries <= tries_always);
+    BOOST_TEST(std::abs(e - e_always) <= 1e-9 * e_always);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(the_second_start_stops_at_its_budget_whatever_the_schedule)
