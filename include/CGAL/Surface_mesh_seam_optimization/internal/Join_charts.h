@@ -67,7 +67,7 @@ inline std::vector<Chart_join> chart_joins(const Cut_mesh& cm, const std::vector
 inline bool join_two_charts(Cut_mesh& cm, const Vertex_corners& vc, const Chart_join& join)
 {
   std::vector<int> chart;
-  const std::size_t n_charts = cm.compute_charts(chart);
+  cm.compute_charts(chart);
   // the corner pairs to merge (corners are stable under relabelling; UV ids are not)
   std::vector<std::pair<int, int> > pairs;
   for(std::size_t h = 0; h < cm.opposite.size(); ++h)
@@ -149,7 +149,7 @@ inline bool join_two_charts(Cut_mesh& cm, const Vertex_corners& vc, const Chart_
   for(std::size_t u = 0; u < on_border.size(); ++u)
     if(on_border[u] && loops.find(int(u)) == int(u)) ++n_loops;
   std::size_t invalid = 0;
-  bool valid = n_joined + 1 == n_charts && chi[j] + n_loops == 2 && untangle_uv_map(cm, invalid);
+  bool valid = chi[j] + n_loops == 2 && untangle_uv_map(cm, invalid);
   if(!valid) before.restore(cm);
   return valid;
 }
