@@ -1180,8 +1180,7 @@ BOOST_AUTO_TEST_CASE(exact_curvature_steps_reach_the_same_minimum_in_fewer_itera
   auto run = [&](int exact_iterations, std::size_t& iterations, std::size_t& exact_steps,
                  std::size_t& factorizations) {
     Cut_mesh c = cm;
-    SMSO::internal::Newton_settings settings; // as minimize_distortion()
-    settings.extrapolation_limit = 16;
+    SMSO::internal::Newton_settings settings = SMSO::internal::distortion_only_newton_settings();
     settings.exact_curvature_iterations = exact_iterations;
     settings.relative_decrease_tolerance = 1e-13;
     return descend(c, settings, 1000, [&](const auto& newton) {
@@ -1216,9 +1215,7 @@ BOOST_AUTO_TEST_CASE(stale_factor_tries_back_off_after_failures_and_reach_the_sa
     const Cut_mesh cm = mesh == 0 ? pressed_bump(40, 4.) : pressed_bump(30, 6.);
     auto run = [&](bool backoff, std::size_t& tries, std::size_t& failures, std::size_t& iterations) {
       Cut_mesh c = cm;
-      SMSO::internal::Newton_settings settings; // as minimize_distortion()
-      settings.extrapolation_limit = 16;
-      settings.exact_curvature_iterations = 10;
+      SMSO::internal::Newton_settings settings = SMSO::internal::distortion_only_newton_settings();
       settings.relative_decrease_tolerance = 1e-13;
       settings.stale_factor_backoff = backoff;
       return descend(c, settings, 1000, [&](const auto& newton) {

@@ -57,13 +57,7 @@ Optimization_result minimize_distortion_impl(const TriangleMesh& tm, UVMap uvmap
                                  Default_sparse_solver_traits(Default_sparse_solver_traits::default_threshold, true));
   const std::size_t max_iterations =
     internal::number_of_iterations_parameter(np, internal::default_number_of_iterations_distortion_only);
-  internal::Newton_settings settings;
-  // Extrapolated full steps: Newton iterations 20 -> 15 on bimba_i_f10000,
-  // 136 -> 65 on hand_1_i_f5000, 251 -> 153 on lucy_o_f12067 (notes/issue20).
-  settings.extrapolation_limit = 16;
-  // Steps along the exact curvature after full steps: lucy at 96544 faces
-  // 98 -> 65 Newton iterations, 34 -> 22 s (notes/issue20).
-  settings.exact_curvature_iterations = 10;
+  internal::Newton_settings settings = internal::distortion_only_newton_settings();
   settings.gradient_tolerance =
     choose_parameter(get_parameter(np, internal_np::gradient_tolerance), settings.gradient_tolerance);
   if(!(settings.gradient_tolerance >= 0))
